@@ -1,0 +1,16 @@
+package dempano.dem;
+
+import java.util.Optional;
+
+/** Where tiles come from: a directory of .hgt files, or tiles held in memory. Implementations are thread-safe. */
+public interface DemSource {
+    /**
+     * The tile, loaded and void-filled, or empty if this source has no data for it.
+     *
+     * @throws DemException if the tile exists but cannot be read
+     */
+    Optional<HgtTile> tile(TileId id);
+
+    /** A short description for messages and metadata (e.g. the directory). */
+    String describe();
+}

@@ -1,0 +1,104 @@
+package dempano.dem;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipException;
+import java.util.zip.ZipInputStream;
+
+/**
+ * Reads SRTM {@code .hgt} tiles: big-endian int16 heights in metres, row 0 the northern edge,
+ * -32768 for voids; 1201² samples (SRTM3) or 3601² (SRTM1), told apart by the length. Also
+ * {@code .hgt.zip} holding one {@code .hgt}. The tile's position comes from the file name.
+ */
+public final class HgtReader {
+    /** The void marker in SRTM files. */
+    public static final short VOID = Short.MIN_VALUE;
+    /** Heights outside this range (voids aside) mean a corrupt or little-endian file. */
+    static final int MIN_PLAUSIBLE_METRES = -1000, MAX_PLAUSIBLE_METRES = 9000;
+
+    private HgtReader() {
+    }
+
+    /**
+     * Reads and void-fills a tile.
+     *
+     * @throws DemException naming the file and the problem (bad name, size, zip content, heights, I/O)
+     */
+    public static HgtTile read(Path file) {
+        String fileName = file.getFileName().toString();
+        TileId id = TileId.parseFileName(fileName);
+        byte[] bytes;
+        try {
+            bytes = fileName.toLowerCase(java.util.Locale.ROOT).endsWith(".zip") ? unzip(file) : Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new DemException(file + ": no such file", e);
+        } catch (ZipException e) {
+            throw new DemException(file + ": corrupt zip archive (" + e.getMessage() + ")", e);
+        } catch (IOException e) {
+            throw new DemException(file + ": cannot read (" + e + ")", e);
+        }
+        return decode(id, file.toString(), bytes);
+    }
+
+    /** Decodes the raw bytes of a {@code .hgt} file for a known tile. */
+    public static HgtTile decode(TileId id, String source, byte[] bytes) {
+        int n = samplesForLength(source, bytes.length);
+        float[] heights = new float[n * n];
+        ByteBuffer buf = ByteBuffer.wrap(bytes).order(ByteOrder.BIG_ENDIAN);
+        for (int i = 0; i < heights.length; i++) {
+            short v = buf.getShort();
+            if (v == VOID) {
+                heights[i] = Float.NaN;
+            } else if (v < MIN_PLAUSIBLE_METRES || v > MAX_PLAUSIBLE_METRES) {
+                throw new DemException(source + ": implausible height " + v + " m at row " + (i / n) + ", column "
+                        + (i % n) + " (corrupt file, or not big-endian int16?)");
+            } else {
+                heights[i] = v;
+            }
+        }
+        VoidReport voids = VoidFiller.fill(heights, n);
+        return new HgtTile(id, source, n, heights, voids);
+    }
+
+    private static int samplesForLength(String source, long length) {
+        if (length == 2L * HgtTile.SRTM3_SAMPLES * HgtTile.SRTM3_SAMPLES) {
+            return HgtTile.SRTM3_SAMPLES;
+        }
+        if (length == 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES) {
+            return HgtTile.SRTM1_SAMPLES;
+        }
+        throw new DemException(source + ": " + length + " bytes is not an SRTM tile (expected "
+                + 2L * HgtTile.SRTM3_SAMPLES * HgtTile.SRTM3_SAMPLES + " for SRTM3 or "
+                + 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + " for SRTM1; truncated or not a .hgt?)");
+    }
+
+    private static byte[] unzip(Path file) throws IOException {
+        byte[] found = null;
+        String foundName = null;
+        try (InputStream in = Files.newInputStream(file); ZipInputStream zip = new ZipInputStream(in)) {
+            ZipEntry e;
+            while ((e = zip.getNextEntry()) != null) {
+                String name = e.getName();
+                if (e.isDirectory() || !name.toLowerCase(java.util.Locale.ROOT).endsWith(".hgt")) {
+                    continue;
+                }
+                if (found != null) {
+                    throw new DemException(file + ": zip holds more than one .hgt (" + foundName + ", " + name + ")");
+                }
+                // Cap the read so a lying archive cannot exhaust memory.
+                found = zip.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
+                foundName = name;
+            }
+        }
+        if (found == null) {
+            throw new DemException(file + ": zip holds no .hgt file");
+        }
+        return found;
+    }
+}

@@ -1,0 +1,96 @@
+package dempano.dem;
+
+import java.util.Objects;
+
+/**
+ * One SRTM tile's heights after void filling. Immutable: the height array is never exposed.
+ * Row 0 is the northern edge, column 0 the western edge; samples lie on the tile's edges, so the
+ * last row/column repeats the first row/column of the neighbour.
+ */
+public final class HgtTile {
+    /** SRTM3: 3 arc-seconds. */
+    public static final int SRTM3_SAMPLES = 1201;
+    /** SRTM1: 1 arc-second. */
+    public static final int SRTM1_SAMPLES = 3601;
+
+    private final TileId id;
+    private final String source;
+    private final int samplesPerSide;
+    private final float[] heightsMetres;
+    private final VoidReport voids;
+
+    HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids) {
+        this.id = Objects.requireNonNull(id);
+        this.source = Objects.requireNonNull(source);
+        if (heightsMetres.length != samplesPerSide * samplesPerSide) {
+            throw new IllegalArgumentException("heights do not match " + samplesPerSide + "²");
+        }
+        this.samplesPerSide = samplesPerSide;
+        this.heightsMetres = heightsMetres;
+        this.voids = Objects.requireNonNull(voids);
+    }
+
+    /**
+     * A tile from heights in metres (row 0 north). Voids ({@code NaN}) are filled as when reading.
+     * For synthetic terrain and tests.
+     */
+    public static HgtTile of(TileId id, int samplesPerSide, float[] heightsMetres, String source) {
+        if (samplesPerSide < 2 || heightsMetres.length != samplesPerSide * samplesPerSide) {
+            throw new IllegalArgumentException("need " + samplesPerSide + "² heights, got " + heightsMetres.length);
+        }
+        float[] copy = heightsMetres.clone();
+        VoidReport report = VoidFiller.fill(copy, samplesPerSide);
+        return new HgtTile(id, source, samplesPerSide, copy, report);
+    }
+
+    public TileId id() {
+        return id;
+    }
+
+    /** Where the tile came from (file path or a description). */
+    public String source() {
+        return source;
+    }
+
+    /** 1201 (SRTM3), 3601 (SRTM1) or another size for synthetic tiles. */
+    public int samplesPerSide() {
+        return samplesPerSide;
+    }
+
+    /** Sample intervals per degree: samplesPerSide − 1. */
+    public int intervalsPerDegree() {
+        return samplesPerSide - 1;
+    }
+
+    /** Height in metres at a sample; row 0 north, column 0 west. */
+    public float heightMetres(int row, int col) {
+        return heightsMetres[row * samplesPerSide + col];
+    }
+
+    /** What void filling found and did. */
+    public VoidReport voids() {
+        return voids;
+    }
+
+    /** True if the tile had no valid sample at all (then it holds sea level and is treated as missing). */
+    public boolean entirelyVoid() {
+        return voids.voidCells() == heightsMetres.length;
+    }
+
+    /** Bilinear height at a position inside the tile, metres. */
+    public double heightAt(double latDeg, double lonDeg) {
+        double row = (id.latSouthDeg() + 1 - latDeg) * intervalsPerDegree();
+        double col = (lonDeg - id.lonWestDeg()) * intervalsPerDegree();
+        int r = Math.max(0, Math.min(samplesPerSide - 2, (int) Math.floor(row)));
+        int c = Math.max(0, Math.min(samplesPerSide - 2, (int) Math.floor(col)));
+        double fr = row - r, fc = col - c;
+        double h00 = heightMetres(r, c), h01 = heightMetres(r, c + 1);
+        double h10 = heightMetres(r + 1, c), h11 = heightMetres(r + 1, c + 1);
+        return (1 - fr) * ((1 - fc) * h00 + fc * h01) + fr * ((1 - fc) * h10 + fc * h11);
+    }
+
+    @Override
+    public String toString() {
+        return id.name() + " (" + samplesPerSide + "², " + source + ")";
+    }
+}

@@ -1,0 +1,84 @@
+package dempano.dem;
+
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * A one-degree SRTM tile named by its south-west corner: {@code N46E008} covers 46–47°N, 8–9°E;
+ * {@code S16E166} covers 16–15°S, 166–167°E.
+ *
+ * @param latSouthDeg latitude of the southern edge, degrees, in [-90, 89]
+ * @param lonWestDeg  longitude of the western edge, degrees, in [-180, 179]
+ */
+public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<TileId> {
+    // A name such as N46E008, optionally followed by a suffix (N19W155v2.3a) as GDAL accepts,
+    // then .hgt or .hgt.zip.
+    private static final Pattern FILE_NAME =
+            Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.hgt(\\.zip)?$", Pattern.CASE_INSENSITIVE);
+
+    public TileId {
+        if (latSouthDeg < -90 || latSouthDeg > 89 || lonWestDeg < -180 || lonWestDeg > 179) {
+            throw new IllegalArgumentException("no SRTM tile has its south-west corner at "
+                    + latSouthDeg + ", " + lonWestDeg);
+        }
+    }
+
+    /** The tile whose south-west corner is at the given integer degrees, longitude wrapped into [-180, 180). */
+    public static TileId of(int latSouthDeg, int lonWestDeg) {
+        return new TileId(latSouthDeg, Math.floorMod(lonWestDeg + 180, 360) - 180);
+    }
+
+    /** The tile containing a point; a point on a tile edge belongs to the tile north/east of it. */
+    public static TileId containing(double latDeg, double lonDeg) {
+        int lat = (int) Math.floor(latDeg);
+        if (lat == 90) {
+            lat = 89;
+        }
+        return of(lat, (int) Math.floor(lonDeg));
+    }
+
+    /**
+     * Parses a tile file name ({@code N46E008.hgt}, {@code n46e008.hgt}, {@code N19W155v2.3a.hgt.zip}).
+     *
+     * @throws DemException if the name is not an SRTM tile name
+     */
+    public static TileId parseFileName(String fileName) {
+        Matcher m = FILE_NAME.matcher(fileName);
+        if (!m.matches()) {
+            throw new DemException("'" + fileName + "' is not an SRTM tile file name (expected e.g. N46E008.hgt, "
+                    + "S16E166.hgt.zip or N19W155v2.3a.hgt.zip)");
+        }
+        int lat = Integer.parseInt(m.group(2));
+        int lon = Integer.parseInt(m.group(4));
+        boolean south = m.group(1).equalsIgnoreCase("S");
+        boolean west = m.group(3).equalsIgnoreCase("W");
+        if (lat > (south ? 90 : 89) || lon > (west ? 180 : 179)) {
+            throw new DemException("'" + fileName + "' names a tile outside the globe (lat " + (south ? "S" : "N")
+                    + lat + ", lon " + (west ? "W" : "E") + lon + ")");
+        }
+        return new TileId(south ? -lat : lat, west ? -lon : lon);
+    }
+
+    /** True if a file name parses as a tile name. */
+    public static boolean isTileFileName(String fileName) {
+        return FILE_NAME.matcher(fileName).matches();
+    }
+
+    /** The canonical name, e.g. {@code N46E008}, {@code S16E166}, {@code N00W001}. */
+    public String name() {
+        return String.format(Locale.ROOT, "%s%02d%s%03d", latSouthDeg < 0 ? "S" : "N", Math.abs(latSouthDeg),
+                lonWestDeg < 0 ? "W" : "E", Math.abs(lonWestDeg));
+    }
+
+    @Override
+    public int compareTo(TileId o) {
+        int c = Integer.compare(o.latSouthDeg, latSouthDeg); // north first
+        return c != 0 ? c : Integer.compare(lonWestDeg, o.lonWestDeg);
+    }
+
+    @Override
+    public String toString() {
+        return name();
+    }
+}

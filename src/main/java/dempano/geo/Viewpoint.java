@@ -1,0 +1,72 @@
+package dempano.geo;
+
+import dempano.dem.Mosaic;
+import dempano.dem.TileSelection;
+import java.util.Locale;
+
+/**
+ * Where the eye is. The standing altitude is either the DEM's height at the coordinate plus a signed
+ * offset (the thesis's altitude correction, e.g. to step onto a ridge the 90 m DEM rounds off) or an
+ * explicit absolute altitude; the eye is {@code eyeHeightMetres} above the standing altitude.
+ *
+ * @param latDeg                 latitude, degrees, [-90, 90]
+ * @param lonDeg                 longitude, degrees, [-180, 180]
+ * @param groundElevationMetres  DEM height at the coordinate (bilinear), metres above sea level
+ * @param offsetMetres           signed correction added to the DEM height; NaN when an absolute altitude was given
+ * @param standingAltitudeMetres ground the observer stands on, metres above sea level
+ * @param eyeHeightMetres        eye above the standing altitude, metres (≥ 0)
+ */
+public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
+                        double standingAltitudeMetres, double eyeHeightMetres) {
+    /** A standing person's eye, metres. */
+    public static final double DEFAULT_EYE_HEIGHT_METRES = 2.0;
+
+    public Viewpoint {
+        TileSelection.checkCoordinates(latDeg, lonDeg);
+        if (!Double.isFinite(standingAltitudeMetres) || !(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
+            throw new IllegalArgumentException("bad viewpoint altitude: standing " + standingAltitudeMetres
+                    + " m, eye height " + eyeHeightMetres + " m");
+        }
+    }
+
+    /** Standing on the DEM at the coordinate, corrected by {@code offsetMetres}. */
+    public static Viewpoint onDem(Mosaic mosaic, double latDeg, double lonDeg, double offsetMetres,
+                                  double eyeHeightMetres) {
+        TileSelection.checkCoordinates(latDeg, lonDeg);
+        if (!Double.isFinite(offsetMetres)) {
+            throw new IllegalArgumentException("altitude offset must be a finite number of metres, got " + offsetMetres);
+        }
+        double ground = groundAt(mosaic, latDeg, lonDeg);
+        return new Viewpoint(latDeg, lonDeg, ground, offsetMetres, ground + offsetMetres, eyeHeightMetres);
+    }
+
+    /** Standing at an explicit altitude (metres above sea level) at the coordinate. */
+    public static Viewpoint atAltitude(Mosaic mosaic, double latDeg, double lonDeg, double altitudeMetres,
+                                       double eyeHeightMetres) {
+        TileSelection.checkCoordinates(latDeg, lonDeg);
+        if (!Double.isFinite(altitudeMetres) || Math.abs(altitudeMetres) > 1e6) {
+            throw new IllegalArgumentException("altitude must be a finite number of metres, got " + altitudeMetres);
+        }
+        return new Viewpoint(latDeg, lonDeg, groundAt(mosaic, latDeg, lonDeg), Double.NaN, altitudeMetres,
+                eyeHeightMetres);
+    }
+
+    private static double groundAt(Mosaic mosaic, double latDeg, double lonDeg) {
+        double h = mosaic.heightAt(latDeg, lonDeg);
+        if (Double.isNaN(h)) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "the DEM mosaic has no height at %.6f, %.6f", latDeg, lonDeg));
+        }
+        return h;
+    }
+
+    /** The eye's altitude, metres: standing altitude plus eye height. */
+    public double eyeAltitudeMetres() {
+        return standingAltitudeMetres + eyeHeightMetres;
+    }
+
+    /** The local east-north-up frame with its origin at the eye. */
+    public LocalFrame eyeFrame() {
+        return new LocalFrame(latDeg, lonDeg, eyeAltitudeMetres());
+    }
+}

@@ -1,0 +1,137 @@
+package dempano.dem;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.function.DoubleBinaryOperator;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class MosaicTest {
+    private static final int N = 121; // small synthetic tiles: 120 intervals per degree
+
+    /** A tile sampling f(lat, unwrapped lon) on its grid. */
+    static HgtTile tile(int latS, int lonW, DoubleBinaryOperator f) {
+        float[] h = new float[N * N];
+        for (int r = 0; r < N; r++) {
+            for (int c = 0; c < N; c++) {
+                h[r * N + c] = (float) f.applyAsDouble(latS + 1 - r / 120.0, lonW + c / 120.0);
+            }
+        }
+        return HgtTile.of(TileId.of(latS, lonW), N, h, "synthetic");
+    }
+
+    static DemSource blockAround(int latS, int lonW, int rows, int cols, DoubleBinaryOperator f) {
+        List<HgtTile> tiles = new ArrayList<>();
+        for (int i = 0; i < rows; i++) {
+            for (int j = 0; j < cols; j++) {
+                tiles.add(tile(latS + i, lonW + j, f));
+            }
+        }
+        return new InMemoryDem("synthetic", tiles);
+    }
+
+    // Viewpoints across special meridians/parallels; the tile block around each: truth is f itself.
+    @ParameterizedTest
+    @CsvSource({
+            "46.5, 8.5, 46, 8",      // mid-tile, Alps
+            "0.2, 10.5, -1, 10",    // equator
+            "51.5, 0.3, 51, -1",    // prime meridian
+            "-15.5, 166.5, -16, 166", // southern hemisphere
+            "10.5, 179.7, 10, 179",  // antimeridian, east side
+            "10.5, -179.7, 10, 179", // antimeridian, west side (block starts at 179E, unwrapped)
+    })
+    void stitchesWithoutDuplicatingEdges(double lat, double lon, int blockLatS, int blockLonW) {
+        // Linear inside every tile and continuous across 0° and ±180° (kinks only on tile edges).
+        DoubleBinaryOperator f = (la, lo) -> 500 + 40 * la + 17 * Math.abs(TileSelection.wrap180(lo));
+        DemSource dem = blockAround(blockLatS - 1, blockLonW - 1, 4, 4, f);
+        Mosaic m = Mosaic.around(dem, lat, lon, 60_000, MissingTilePolicy.ERROR);
+        assertEquals(m.tilesNorthSouth() * 120 + 1, m.rows());
+        assertEquals(m.tilesEastWest() * 120 + 1, m.cols());
+        assertTrue(m.tilesMissing().isEmpty());
+        Random rnd = new Random(7);
+        for (int i = 0; i < 500; i++) {
+            double la = lat + (rnd.nextDouble() - 0.5) * 0.9;
+            double lo = lon + (rnd.nextDouble() - 0.5) * 0.9;
+            double truth = f.applyAsDouble(la, lo);
+            double got = m.heightAt(la, lo);
+            if (!Double.isNaN(got)) {
+                assertEquals(truth, got, 1e-3, "at " + la + ", " + lo);
+            }
+        }
+        // The viewpoint itself is always defined, and samples line up exactly on the shared edges.
+        assertEquals(f.applyAsDouble(lat, lon), m.heightAt(lat, lon), 1e-3);
+    }
+
+    @Test
+    void sharedEdgeTakenOnceAndNotShifted() {
+        // Each tile carries its own offset so a duplicated or shifted edge would show.
+        DemSource dem = new InMemoryDem("two", List.of(
+                tile(46, 8, (la, lo) -> 100 + 10 * lo), tile(46, 9, (la, lo) -> 100 + 10 * lo)));
+        TileSelection sel = new TileSelection(46, 8, 1, 2, new boolean[][] {{true, true}});
+        Mosaic m = Mosaic.of(dem, sel, MissingTilePolicy.ERROR);
+        assertEquals(241, m.cols());
+        for (int c = 0; c < m.cols(); c++) {
+            assertEquals(100 + 10 * (8 + c / 120.0), m.sample(60, c), 1e-3, "col " + c);
+        }
+    }
+
+    @Test
+    void missingTileIsSeaLevelWithWarningOrAnError() {
+        DemSource dem = new InMemoryDem("one", List.of(tile(46, 8, (la, lo) -> 700)));
+        Mosaic m = Mosaic.around(dem, 46.5, 8.97, 20_000, MissingTilePolicy.SEA_LEVEL);
+        assertEquals(List.of(new TileId(46, 9)), m.tilesMissing());
+        assertEquals(List.of(new TileId(46, 8)), m.tilesUsed());
+        assertTrue(m.warnings().stream().anyMatch(w -> w.contains("N46E009") && w.contains("sea level")));
+        assertEquals(0, m.heightAt(46.5, 9.1), 0);
+        assertEquals(700, m.heightAt(46.5, 9.0), 0, "the present tile wins on the shared edge");
+        DemException e = assertThrows(DemException.class,
+                () -> Mosaic.around(dem, 46.5, 8.97, 20_000, MissingTilePolicy.ERROR));
+        assertTrue(e.getMessage().contains("N46E009"), e.getMessage());
+    }
+
+    @Test
+    void entirelyVoidTileCountsAsMissing() {
+        float[] voids = new float[N * N];
+        java.util.Arrays.fill(voids, Float.NaN);
+        DemSource dem = new InMemoryDem("void", List.of(HgtTile.of(new TileId(46, 8), N, voids, "void")));
+        Mosaic m = Mosaic.around(dem, 46.5, 8.5, 10_000, MissingTilePolicy.SEA_LEVEL);
+        assertEquals(List.of(new TileId(46, 8)), m.tilesMissing());
+        assertTrue(m.warnings().stream().anyMatch(w -> w.contains("no valid sample")));
+    }
+
+    @Test
+    void mixedResolutionsResampleToTheFinest() {
+        int fine = 241;
+        float[] h = new float[fine * fine];
+        for (int r = 0; r < fine; r++) {
+            for (int c = 0; c < fine; c++) {
+                h[r * fine + c] = (float) (100 + 10 * (9 + c / 240.0));
+            }
+        }
+        DemSource dem = new InMemoryDem("mixed", List.of(tile(46, 8, (la, lo) -> 100 + 10 * lo),
+                HgtTile.of(new TileId(46, 9), fine, h, "fine")));
+        Mosaic m = Mosaic.of(dem, new TileSelection(46, 8, 1, 2, new boolean[][] {{true, true}}), MissingTilePolicy.ERROR);
+        assertEquals(240, m.intervalsPerDegree());
+        assertEquals(100 + 10 * 8.5, m.heightAt(46.5, 8.5), 1e-3);
+        assertEquals(100 + 10 * 9.5, m.heightAt(46.5, 9.5), 1e-3);
+    }
+
+    @Test
+    void badCoordinatesAreClearErrors() {
+        DemSource dem = new InMemoryDem("none", List.of());
+        for (double[] ll : new double[][] {{Double.NaN, 8}, {46, Double.NaN}, {91, 8}, {46, 181}, {-90.5, 0}}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> Mosaic.around(dem, ll[0], ll[1], 10_000, MissingTilePolicy.SEA_LEVEL));
+            assertTrue(e.getMessage().contains("must be in"), e.getMessage());
+        }
+        assertThrows(IllegalArgumentException.class, () -> Mosaic.around(dem, 46, 8, Double.NaN, MissingTilePolicy.SEA_LEVEL));
+        assertThrows(IllegalArgumentException.class, () -> Mosaic.around(dem, 46, 8, -5, MissingTilePolicy.SEA_LEVEL));
+        assertThrows(IllegalArgumentException.class, () -> Mosaic.around(dem, 89.5, 8, 100_000, MissingTilePolicy.SEA_LEVEL));
+    }
+}
