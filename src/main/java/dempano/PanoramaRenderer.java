@@ -1,0 +1,190 @@
+package dempano;
+
+import com.jme3.material.Material;
+import com.jme3.math.Vector3f;
+import dempano.dem.DemSource;
+import dempano.dem.Mosaic;
+import dempano.geo.Viewpoint;
+import dempano.panorama.DepthMode;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.LayerComputer;
+import dempano.panorama.Panorama;
+import dempano.panorama.PanoramaGeometry;
+import dempano.panorama.PanoramaMetadata;
+import dempano.panorama.Stitcher;
+import dempano.panorama.ViewCapture;
+import dempano.panorama.ViewLayout;
+import dempano.render.OffscreenRenderer;
+import dempano.terrain.TerrainBuilder;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+
+/**
+ * The entry point for pipelines: open once, render many panoramas, close.
+ *
+ * <pre>{@code
+ * try (PanoramaRenderer r = PanoramaRenderer.open(new DemDirectory(Path.of("dem")))) {
+ *     Panorama p = r.render(PanoramaRequest.at(46.4314, 8.0942));
+ *     double metres = p.distanceAt(135.0, 2.5);
+ * }
+ * }</pre>
+ *
+ * Thread-safe: DEM loading and mesh building run on the calling thread; GL work is serialized onto
+ * one GL thread.
+ */
+public final class PanoramaRenderer implements AutoCloseable {
+    private final DemSource dem;
+    private final OffscreenRenderer gl;
+
+    private PanoramaRenderer(DemSource dem, OffscreenRenderer gl) {
+        this.dem = dem;
+        this.gl = gl;
+    }
+
+    /**
+     * Opens a renderer on a DEM source, creating the OpenGL context.
+     *
+     * @throws dempano.render.GlUnavailableException when no OpenGL context can be had (message says why)
+     */
+    public static PanoramaRenderer open(DemSource dem) {
+        return new PanoramaRenderer(dem, OffscreenRenderer.open());
+    }
+
+    /** The OpenGL renderer in use. */
+    public String glRenderer() {
+        return gl.glRenderer();
+    }
+
+    public Panorama render(PanoramaRequest request) {
+        return render(request, stage -> { });
+    }
+
+    /**
+     * Renders a panorama, reporting each stage as it starts.
+     *
+     * @throws dempano.dem.DemException      for unreadable or (if so configured) missing tiles
+     * @throws IllegalArgumentException      for a viewpoint without DEM data
+     */
+    public Panorama render(PanoramaRequest req, Consumer<String> progress) {
+        Map<String, Double> timings = new LinkedHashMap<>();
+        long t = System.nanoTime();
+        progress.accept("loading tiles");
+        Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
+        t = lap(timings, "tiles", t);
+
+        Viewpoint eye = Double.isNaN(req.altitudeMetres())
+                ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
+                : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
+        progress.accept("building terrain mesh");
+        Material material = gl.newTerrainMaterial();
+        material.setFloat("RangeMetres", (float) req.rangeMetres());
+        material.setFloat("HazeMetres", (float) Math.max(20_000, req.rangeMetres() * 0.6));
+        // Sun from the north-west, 40° high (east, up, south axes).
+        double sunAz = Math.toRadians(315), sunEl = Math.toRadians(40);
+        material.setVector3("SunDirection", new Vector3f((float) (Math.cos(sunEl) * Math.sin(sunAz)), (float) Math.sin(sunEl),
+                (float) (-Math.cos(sunEl) * Math.cos(sunAz))));
+        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material);
+        t = lap(timings, "mesh", t);
+
+        ElevationRange er = req.elevationRange();
+        PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
+        ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
+        // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
+        double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
+        progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
+                + " (" + terrain.triangles() / 1_000_000.0 + " M triangles)");
+        ViewCapture[] captures;
+        try {
+            captures = gl.render(terrain.root(), layout, req.depthMode(), req.nearMetres(), far, true);
+        } finally {
+            TerrainBuilder.destroyBuffers(terrain.root());
+        }
+        t = lap(timings, "render", t);
+
+        progress.accept("stitching");
+        double[][] eyeDepth = new double[captures.length][];
+        for (int k = 0; k < captures.length; k++) {
+            eyeDepth[k] = Stitcher.eyeDepths(captures[k], layout, req.depthMode(), req.nearMetres(), far);
+        }
+        int[] argb = new int[geometry.widthPx() * geometry.heightPx()];
+        float[] distance = new float[argb.length];
+        Stitcher.stitch(geometry, layout, captures, eyeDepth, argb, distance);
+        if (er.auto()) {
+            PanoramaGeometry cropped = AutoCrop.crop(geometry, distance);
+            int skip = (int) Math.round((geometry.topElevationDeg() - cropped.topElevationDeg()) * geometry.pixelsPerDegree());
+            argb = AutoCrop.rows(argb, geometry.widthPx(), skip, cropped.heightPx());
+            distance = AutoCrop.rows(distance, geometry.widthPx(), skip, cropped.heightPx());
+            geometry = cropped;
+        }
+        t = lap(timings, "stitch", t);
+
+        if (!req.layers().isEmpty()) {
+            progress.accept("computing layers " + req.layers());
+        }
+        var layers = LayerComputer.compute(req.layers(), geometry, distance, eye.eyeFrame(), req.refraction());
+        if (!req.layers().isEmpty()) {
+            lap(timings, "layers", t);
+        }
+        List<String> used = new ArrayList<>(), missing = new ArrayList<>();
+        mosaic.tilesUsed().forEach(id -> used.add(id.name()));
+        mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
+        PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
+                eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
+                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), req.nearMetres(),
+                req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, req.views(),
+                layout.widthPx(), layout.heightPx(), used, missing, mosaic.warnings(), timings, gl.glRenderer());
+        return new Panorama(geometry, argb, distance, layers, meta);
+    }
+
+    private static long lap(Map<String, Double> timings, String stage, long since) {
+        long now = System.nanoTime();
+        timings.put(stage, (now - since) / 1e6);
+        return now;
+    }
+
+    @Override
+    public void close() {
+        gl.close();
+    }
+
+    /** Crops an auto elevation range to the terrain. */
+    static final class AutoCrop {
+        private AutoCrop() {
+        }
+
+        static PanoramaGeometry crop(PanoramaGeometry g, float[] distance) {
+            int w = g.widthPx(), h = g.heightPx();
+            int topRow = h, lowestSkylineRow = 0;
+            for (int c = 0; c < w; c++) {
+                int r = 0;
+                while (r < h && !Float.isFinite(distance[r * w + c])) {
+                    r++;
+                }
+                topRow = Math.min(topRow, r);
+                lowestSkylineRow = Math.max(lowestSkylineRow, r);
+            }
+            if (topRow >= h) {
+                return g; // nothing but sky
+            }
+            double ppd = g.pixelsPerDegree();
+            int first = Math.max(0, topRow - (int) Math.ceil(ppd));
+            int last = Math.min(h - 1, lowestSkylineRow + (int) Math.ceil(10 * ppd));
+            return new PanoramaGeometry(ppd, g.topElevationDeg() - first / ppd, last - first + 1);
+        }
+
+        static int[] rows(int[] a, int w, int skip, int rows) {
+            int[] out = new int[w * rows];
+            System.arraycopy(a, skip * w, out, 0, out.length);
+            return out;
+        }
+
+        static float[] rows(float[] a, int w, int skip, int rows) {
+            float[] out = new float[w * rows];
+            System.arraycopy(a, skip * w, out, 0, out.length);
+            return out;
+        }
+    }
+}

@@ -1,0 +1,143 @@
+package dempano;
+
+import dempano.dem.MissingTilePolicy;
+import dempano.dem.TileSelection;
+import dempano.geo.Refraction;
+import dempano.geo.Viewpoint;
+import dempano.panorama.DepthMode;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Layer;
+import dempano.panorama.ViewLayout;
+import java.util.EnumSet;
+import java.util.Set;
+
+/**
+ * What to render. Start from {@link #at(double, double)} (all defaults) and adjust with the
+ * {@code with…} methods. Immutable; every value is checked when the request is made.
+ *
+ * @param latDeg            viewpoint latitude, degrees [-90, 90]
+ * @param lonDeg            viewpoint longitude, degrees [-180, 180]
+ * @param offsetMetres      signed correction to the DEM height at the viewpoint (default 0)
+ * @param altitudeMetres    absolute standing altitude, metres above sea level; NaN (default) = from the DEM
+ * @param eyeHeightMetres   eye above the standing altitude (default 2 m)
+ * @param rangeMetres       range of sight (default 100 km)
+ * @param pixelsPerDegree   panorama resolution (default 20)
+ * @param elevationRange    elevation angles covered (default -30°:30°)
+ * @param refraction        refraction coefficient (default k = 0.13)
+ * @param depthMode         how distances are obtained (default {@link DepthMode#SHADER_RANGE})
+ * @param layers            extra per-pixel layers (default none)
+ * @param nearMetres        near plane (default 1 m)
+ * @param supersampling     view pixels per panorama pixel, linear (default 1)
+ * @param views             perspective views (default 8)
+ * @param missingTiles      what a missing tile means (default sea level)
+ */
+public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
+                              double eyeHeightMetres, double rangeMetres, double pixelsPerDegree,
+                              ElevationRange elevationRange, Refraction refraction, DepthMode depthMode,
+                              Set<Layer> layers, double nearMetres, double supersampling, int views,
+                              MissingTilePolicy missingTiles) {
+    public static final double DEFAULT_RANGE_METRES = 100_000;
+    public static final double DEFAULT_PIXELS_PER_DEGREE = 20;
+    public static final double DEFAULT_NEAR_METRES = 1;
+
+    public PanoramaRequest {
+        TileSelection.checkCoordinates(latDeg, lonDeg);
+        if (!Double.isFinite(offsetMetres)) {
+            throw new IllegalArgumentException("offset must be a finite number of metres, got " + offsetMetres);
+        }
+        if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
+            throw new IllegalArgumentException("altitude must be a finite number of metres, got " + altitudeMetres);
+        }
+        if (!(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
+            throw new IllegalArgumentException("eye height must be ≥ 0 metres, got " + eyeHeightMetres);
+        }
+        if (!(rangeMetres >= 100 && rangeMetres <= TileSelection.MAX_RANGE_METRES)) {
+            throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000
+                    + " km, got " + rangeMetres / 1000 + " km");
+        }
+        if (!(nearMetres > 0 && nearMetres < 1000)) {
+            throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
+        }
+        layers = Set.copyOf(layers);
+        java.util.Objects.requireNonNull(elevationRange);
+        java.util.Objects.requireNonNull(refraction);
+        java.util.Objects.requireNonNull(depthMode);
+        java.util.Objects.requireNonNull(missingTiles);
+        // Validates ppd, views and supersampling with clear messages.
+        ViewLayout.forPanorama(dempano.panorama.PanoramaGeometry.of(pixelsPerDegree, elevationRange.bottomDeg(),
+                elevationRange.topDeg()), views, supersampling);
+    }
+
+    /** A request with every default at a coordinate. */
+    public static PanoramaRequest at(double latDeg, double lonDeg) {
+        return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
+                DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
+                DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
+                MissingTilePolicy.SEA_LEVEL);
+    }
+
+    public PanoramaRequest withOffsetMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, v, altitudeMetres, eyeHeightMetres, rangeMetres, pixelsPerDegree,
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withAltitudeMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, v, eyeHeightMetres, rangeMetres, pixelsPerDegree,
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withEyeHeightMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, v, rangeMetres, pixelsPerDegree,
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withRangeMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, v, pixelsPerDegree,
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withPixelsPerDegree(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres, v,
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withElevationRange(ElevationRange v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withRefraction(Refraction v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withDepthMode(DepthMode v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withLayers(Set<Layer> v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withNearMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles);
+    }
+
+    public PanoramaRequest withSupersampling(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles);
+    }
+
+    public PanoramaRequest withViews(int v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles);
+    }
+
+    public PanoramaRequest withMissingTiles(MissingTilePolicy v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v);
+    }
+}

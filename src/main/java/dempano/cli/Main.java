@@ -1,0 +1,152 @@
+package dempano.cli;
+
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.dem.DemDirectory;
+import dempano.dem.DemException;
+import dempano.dem.DemoTerrain;
+import dempano.dem.MissingTilePolicy;
+import dempano.geo.Refraction;
+import dempano.io.PanoramaWriter;
+import dempano.panorama.DepthMode;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Layer;
+import dempano.panorama.Panorama;
+import dempano.render.GlUnavailableException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.EnumSet;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code dempano}: renders a 360° panorama and its distance map for a viewpoint. */
+@Command(name = "dempano", mixinStandardHelpOptions = true, version = "dempano 0.1.0", sortOptions = false,
+        description = {"Renders the 360° landscape panorama seen from a point, and a distance map, from SRTM .hgt tiles.",
+                "With no --lat/--lon/--dem-dir it renders the built-in demo scene (generated into testdata/demo-dem)."},
+        footer = {"", "Writes P.png, P-distance.npy (or .pfm), P-distance.png, P-<layer>.npy and P.json for --out P.",
+                "Exit codes: 0 done, 1 rendering or input failure, 2 bad arguments."})
+public final class Main implements Callable<Integer> {
+    @Option(names = "--lat", description = "Viewpoint latitude, degrees north (-90..90). Default: the demo scene's.")
+    Double latDeg;
+    @Option(names = "--lon", description = "Viewpoint longitude, degrees east (-180..180). Default: the demo scene's.")
+    Double lonDeg;
+    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of SRTM tiles (N46E008.hgt, *.hgt.zip). Default: the demo DEM.")
+    Path demDir;
+    @Option(names = "--out", paramLabel = "PREFIX", description = "Output prefix (default: ${DEFAULT-VALUE}).", defaultValue = "build/panorama/panorama")
+    String out;
+    @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}).", defaultValue = "20")
+    double ppd;
+    @Option(names = "--range-km", description = "Range of sight, km (default: 100; demo scene: 60).")
+    Double rangeKm;
+    @Option(names = "--offset-m", description = "Signed altitude correction added to the DEM height at the viewpoint, metres (default: ${DEFAULT-VALUE}).", defaultValue = "0")
+    double offsetMetres;
+    @Option(names = "--altitude-m", description = "Absolute standing altitude, metres above sea level, instead of the DEM height (+ offset).")
+    Double altitudeMetres;
+    @Option(names = "--eye-height-m", description = "Eye above the standing altitude, metres (default: ${DEFAULT-VALUE}).", defaultValue = "2")
+    double eyeHeightMetres;
+    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient k: apparent lift k·d²/2R; 0 = off (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
+    double refraction;
+    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP|auto", description = "Elevation angles covered, degrees (default: ${DEFAULT-VALUE}); auto crops to the terrain.", defaultValue = "-30:30")
+    String elevationRange;
+    @Option(names = "--depth-mode", paramLabel = "MODE", description = "shader (exact float range, default), reversed32f (reversed-Z float depth), standard24 (the thesis's 24-bit linearization).", defaultValue = "shader")
+    String depthMode;
+    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, comma-separated: elevation, latitude, longitude, ground-distance.")
+    Set<String> layers;
+    @Option(names = "--pfm", description = "Write the distance map as .pfm instead of .npy.")
+    boolean pfm;
+    @Option(names = "--near-m", description = "Near plane, metres (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    double nearMetres;
+    @Option(names = "--supersampling", description = "View pixels per panorama pixel, linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    double supersampling;
+    @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
+    int views;
+    @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
+    String missingTiles;
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+
+    /** Runs the CLI and returns the exit code (for tests). */
+    public static int run(String... args) {
+        CommandLine cl = new CommandLine(new Main());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            PrintWriter err = ex.getCommandLine().getErr();
+            err.println("dempano: " + ex.getMessage());
+            err.println("Try 'dempano --help' for the options.");
+            return 2;
+        });
+        cl.setExecutionExceptionHandler((ex, c, parsed) -> {
+            PrintWriter err = c.getErr();
+            if (ex instanceof IllegalArgumentException) {
+                err.println("dempano: " + ex.getMessage());
+                return 2;
+            }
+            if (ex instanceof DemException || ex instanceof GlUnavailableException || ex instanceof java.io.IOException) {
+                err.println("dempano: " + ex.getMessage());
+                return 1;
+            }
+            err.println("dempano: unexpected failure: " + ex);
+            ex.printStackTrace(err);
+            return 1;
+        });
+        return cl.execute(args);
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        boolean demo = latDeg == null && lonDeg == null && demDir == null;
+        if (!demo && (latDeg == null || lonDeg == null)) {
+            throw new IllegalArgumentException("give both --lat and --lon (or neither, for the demo scene)");
+        }
+        if (!demo && demDir == null) {
+            throw new IllegalArgumentException("--dem-dir is needed with --lat/--lon");
+        }
+        Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
+        double lat = demo ? DemoTerrain.VIEW_LAT_DEG : latDeg, lon = demo ? DemoTerrain.VIEW_LON_DEG : lonDeg;
+        double range = rangeKm != null ? rangeKm * 1000 : (demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES);
+        Set<Layer> wanted = EnumSet.noneOf(Layer.class);
+        if (layers != null) {
+            for (String s : layers) {
+                wanted.add(Layer.fromName(s.trim()));
+            }
+        }
+        MissingTilePolicy policy = switch (missingTiles.toLowerCase(Locale.ROOT)) {
+            case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;
+            case "error" -> MissingTilePolicy.ERROR;
+            default -> throw new IllegalArgumentException("--missing-tiles must be sea or error, got " + missingTiles);
+        };
+        PanoramaRequest req = PanoramaRequest.at(lat, lon).withOffsetMetres(offsetMetres)
+                .withAltitudeMetres(altitudeMetres == null ? Double.NaN : altitudeMetres)
+                .withEyeHeightMetres(eyeHeightMetres).withRangeMetres(range).withPixelsPerDegree(ppd)
+                .withElevationRange(ElevationRange.parse(elevationRange)).withRefraction(new Refraction(refraction))
+                .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
+                .withSupersampling(supersampling).withViews(views).withMissingTiles(policy);
+        Path outParent = Path.of(out).toAbsolutePath().getParent();
+        if (outParent != null && out.startsWith("build/")) {
+            Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
+        }
+        DemDirectory dem = new DemDirectory(dir);
+        long t0 = System.nanoTime();
+        System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
+        Panorama p;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            System.err.println("  OpenGL: " + r.glRenderer());
+            p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
+        }
+        for (String w : p.metadata().warnings()) {
+            System.err.println("  warning: " + w);
+        }
+        var files = PanoramaWriter.write(p, out, pfm);
+        System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, files);
+        System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms%n",
+                p.metadata().eyeAltitudeMetres(), p.metadata().groundElevationMetres(), p.widthPx(), p.heightPx(),
+                p.metadata().timingsMillis());
+        return 0;
+    }
+}

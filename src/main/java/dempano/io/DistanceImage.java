@@ -1,0 +1,76 @@
+package dempano.io;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.util.Locale;
+
+/**
+ * A distance map to look at: log-scaled colours (near = warm, far = cool, sky white) with a legend
+ * strip in kilometres below the panorama.
+ */
+public final class DistanceImage {
+    private static final int LEGEND_PX = 48;
+
+    private DistanceImage() {
+    }
+
+    /** Colour for a distance in [minM, maxM] on a log scale (a turbo-like ramp). */
+    static int colour(double metres, double minM, double maxM) {
+        if (!Double.isFinite(metres)) {
+            return 0xffffff;
+        }
+        double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - Math.log(minM)) / (Math.log(maxM) - Math.log(minM));
+        // Piecewise ramp red → yellow → green → cyan → blue → violet.
+        double[][] stops = {{0.70, 0.05, 0.05}, {0.95, 0.55, 0.05}, {0.85, 0.85, 0.15}, {0.25, 0.70, 0.30},
+                {0.15, 0.65, 0.75}, {0.15, 0.30, 0.80}, {0.35, 0.15, 0.55}};
+        double x = t * (stops.length - 1);
+        int i = Math.min(stops.length - 2, (int) Math.floor(x));
+        double f = x - i;
+        int r = (int) Math.round(255 * (stops[i][0] + f * (stops[i + 1][0] - stops[i][0])));
+        int g = (int) Math.round(255 * (stops[i][1] + f * (stops[i + 1][1] - stops[i][1])));
+        int b = (int) Math.round(255 * (stops[i][2] + f * (stops[i + 1][2] - stops[i][2])));
+        return (r << 16) | (g << 8) | b;
+    }
+
+    public static BufferedImage render(java.nio.FloatBuffer distance, int width, int height, double maxMetres) {
+        double minM = 100, maxM = Math.max(1000, maxMetres);
+        BufferedImage img = new BufferedImage(width, height + LEGEND_PX, BufferedImage.TYPE_INT_RGB);
+        int base = distance.position();
+        for (int r = 0; r < height; r++) {
+            for (int c = 0; c < width; c++) {
+                img.setRGB(c, r, colour(distance.get(base + r * width + c), minM, maxM));
+            }
+        }
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, height, width, LEGEND_PX);
+        int barX = 60, barW = Math.min(width - 120, 1200), barY = height + 6, barH = 14;
+        for (int x = 0; x < barW; x++) {
+            double m = Math.exp(Math.log(minM) + (Math.log(maxM) - Math.log(minM)) * x / (barW - 1));
+            g.setColor(new Color(colour(m, minM, maxM)));
+            g.fillRect(barX + x, barY, 1, barH);
+        }
+        g.setColor(Color.BLACK);
+        g.setStroke(new BasicStroke(1));
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        for (double km : new double[] {0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200, 500}) {
+            double m = km * 1000;
+            if (m < minM || m > maxM) {
+                continue;
+            }
+            int x = barX + (int) Math.round((Math.log(m) - Math.log(minM)) / (Math.log(maxM) - Math.log(minM)) * (barW - 1));
+            g.drawLine(x, barY + barH, x, barY + barH + 4);
+            String label = km < 1 ? String.format(Locale.ROOT, "%.1f", km) : String.format(Locale.ROOT, "%.0f", km);
+            g.drawString(label, x - g.getFontMetrics().stringWidth(label) / 2, barY + barH + 17);
+        }
+        g.drawString("km", barX + barW + 8, barY + barH + 17);
+        g.drawString("distance (sky white)", 4, barY + 11);
+        g.dispose();
+        return img;
+    }
+}

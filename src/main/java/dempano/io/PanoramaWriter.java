@@ -1,0 +1,101 @@
+package dempano.io;
+
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import dempano.panorama.Layer;
+import dempano.panorama.Panorama;
+import dempano.panorama.PanoramaGeometry;
+import dempano.panorama.PanoramaMetadata;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.ImageIO;
+
+/**
+ * Writes a panorama's files for a prefix P: {@code P.png}, {@code P-distance.npy} (or {@code .pfm}),
+ * {@code P-distance.png}, {@code P-<layer>.npy} and {@code P.json}. Each file is written atomically.
+ */
+public final class PanoramaWriter {
+    private PanoramaWriter() {
+    }
+
+    /** @return the files written */
+    public static List<Path> write(Panorama p, String prefix, boolean pfm) throws IOException {
+        List<Path> files = new ArrayList<>();
+        Path png = Path.of(prefix + ".png");
+        AtomicFiles.write(png, out -> {
+            if (!ImageIO.write(p.image(), "png", out)) {
+                throw new IOException("no PNG writer");
+            }
+        });
+        files.add(png);
+        Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
+        if (pfm) {
+            FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+        } else {
+            FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+        }
+        files.add(dist);
+        Path distPng = Path.of(prefix + "-distance.png");
+        AtomicFiles.write(distPng, out -> ImageIO.write(
+                DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
+        files.add(distPng);
+        for (Layer l : p.layers()) {
+            Path f = Path.of(prefix + "-" + l.fileName() + ".npy");
+            FloatArrayWriter.writeNpy(f, p.layerBuffer(l), p.heightPx(), p.widthPx());
+            files.add(f);
+        }
+        Path json = Path.of(prefix + ".json");
+        String text = metadataJson(p, files);
+        AtomicFiles.write(json, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
+        files.add(json);
+        return files;
+    }
+
+    /** The metadata document (see README for the fields). */
+    public static String metadataJson(Panorama p, List<Path> files) {
+        PanoramaMetadata m = p.metadata();
+        PanoramaGeometry g = p.geometry();
+        Map<String, Object> doc = new LinkedHashMap<>();
+        Map<String, Object> vp = new LinkedHashMap<>();
+        vp.put("latDeg", m.latDeg());
+        vp.put("lonDeg", m.lonDeg());
+        vp.put("groundElevationMetres", m.groundElevationMetres());
+        vp.put("offsetMetres", Double.isNaN(m.offsetMetres()) ? null : m.offsetMetres());
+        vp.put("standingAltitudeMetres", m.standingAltitudeMetres());
+        vp.put("eyeHeightMetres", m.eyeHeightMetres());
+        vp.put("eyeAltitudeMetres", m.eyeAltitudeMetres());
+        doc.put("viewpoint", vp);
+        Map<String, Object> grid = new LinkedHashMap<>();
+        grid.put("pixelsPerDegree", g.pixelsPerDegree());
+        grid.put("width", g.widthPx());
+        grid.put("height", g.heightPx());
+        grid.put("azimuthOfColumn0LeftEdgeDeg", PanoramaGeometry.LEFT_AZIMUTH_DEG);
+        grid.put("elevationOfRow0TopEdgeDeg", g.topElevationDeg());
+        grid.put("pixelCentre", "azimuth = (col + 0.5)/ppd clockwise from true north; elevation = top - (row + 0.5)/ppd");
+        doc.put("grid", grid);
+        doc.put("earthModel", PanoramaMetadata.EARTH_MODEL);
+        doc.put("refractionCoefficient", m.refractionCoefficient());
+        doc.put("rangeMetres", m.rangeMetres());
+        doc.put("depthMode", m.depthMode().optionName());
+        doc.put("nearMetres", m.nearMetres());
+        doc.put("farMetres", Double.isInfinite(m.farMetres()) ? "infinite" : m.farMetres());
+        doc.put("views", m.views());
+        doc.put("viewSizePx", List.of(m.viewWidthPx(), m.viewHeightPx()));
+        doc.put("distanceUnits", "metres, float32, straight line from the eye; sky = +Infinity");
+        doc.put("tilesUsed", m.tilesUsed());
+        doc.put("tilesMissing", m.tilesMissing());
+        doc.put("warnings", m.warnings());
+        doc.put("timingsMillis", m.timingsMillis());
+        doc.put("glRenderer", m.glRenderer());
+        List<String> names = new ArrayList<>();
+        files.forEach(f -> names.add(f.getFileName().toString()));
+        doc.put("files", names);
+        Gson gson = new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create();
+        return gson.toJson(doc) + "\n";
+    }
+}

@@ -1,0 +1,130 @@
+package dempano.panorama;
+
+import java.awt.image.BufferedImage;
+import java.util.Collections;
+import java.util.EnumMap;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * A rendered 360° panorama: colour, distance per pixel and optional layers on an equirectangular
+ * grid ({@link PanoramaGeometry}). Row-major arrays, row 0 at the top. Distances are straight-line
+ * metres from the eye to the terrain point seen, +∞ for sky. Immutable; accessors return copies
+ * only where noted.
+ */
+public final class Panorama {
+    private final PanoramaGeometry geometry;
+    private final int[] argb;
+    private final float[] distanceMetres;
+    private final Map<Layer, float[]> layers;
+    private final PanoramaMetadata metadata;
+
+    public Panorama(PanoramaGeometry geometry, int[] argb, float[] distanceMetres, Map<Layer, float[]> layers,
+                    PanoramaMetadata metadata) {
+        this.geometry = Objects.requireNonNull(geometry);
+        int n = geometry.widthPx() * geometry.heightPx();
+        if (argb.length != n || distanceMetres.length != n) {
+            throw new IllegalArgumentException("arrays do not match " + geometry.widthPx() + "×" + geometry.heightPx());
+        }
+        this.argb = argb;
+        this.distanceMetres = distanceMetres;
+        EnumMap<Layer, float[]> copy = new EnumMap<>(Layer.class);
+        copy.putAll(layers);
+        this.layers = Collections.unmodifiableMap(copy);
+        this.metadata = Objects.requireNonNull(metadata);
+    }
+
+    public PanoramaGeometry geometry() {
+        return geometry;
+    }
+
+    public int widthPx() {
+        return geometry.widthPx();
+    }
+
+    public int heightPx() {
+        return geometry.heightPx();
+    }
+
+    public PanoramaMetadata metadata() {
+        return metadata;
+    }
+
+    /** Azimuth of a column's centre, degrees clockwise from true north. */
+    public double azimuthOfColumn(int column) {
+        return geometry.azimuthOfColumn(column);
+    }
+
+    /** Elevation angle of a row's centre above the eye's horizontal, degrees. */
+    public double elevationOfRow(int row) {
+        return geometry.elevationOfRow(row);
+    }
+
+    /** Distance in metres of the pixel at (column, row); +∞ for sky. */
+    public float distanceMetres(int column, int row) {
+        return distanceMetres[row * widthPx() + column];
+    }
+
+    /**
+     * Distance in metres seen in a direction (the pixel containing it); +∞ for sky, NaN outside the
+     * panorama's elevation range.
+     */
+    public double distanceAt(double azimuthDeg, double elevationDeg) {
+        int col = (int) Math.floor(geometry.columnOf(azimuthDeg)) % widthPx();
+        double row = geometry.rowOf(elevationDeg);
+        if (!(row >= 0 && row < heightPx())) {
+            return Double.NaN;
+        }
+        return distanceMetres[(int) row * widthPx() + col];
+    }
+
+    /** Colour of a pixel, 0xAARRGGBB. */
+    public int argb(int column, int row) {
+        return argb[row * widthPx() + column];
+    }
+
+    /** A copy of the distance array (row-major, metres). */
+    public float[] distanceArray() {
+        return distanceMetres.clone();
+    }
+
+    /** The layers rendered on request. */
+    public java.util.Set<Layer> layers() {
+        return layers.keySet();
+    }
+
+    /** A copy of a layer (row-major), or throws if it was not requested. */
+    public float[] layer(Layer layer) {
+        float[] l = layers.get(layer);
+        if (l == null) {
+            throw new IllegalArgumentException("layer " + layer.fileName() + " was not rendered; request it");
+        }
+        return l.clone();
+    }
+
+    /** The colour image. */
+    public BufferedImage image() {
+        BufferedImage img = new BufferedImage(widthPx(), heightPx(), BufferedImage.TYPE_INT_RGB);
+        img.setRGB(0, 0, widthPx(), heightPx(), argb, 0, widthPx());
+        return img;
+    }
+
+    // Package-level access for writers in this library without copying.
+    float[] distanceArrayUnsafe() {
+        return distanceMetres;
+    }
+
+    /** Read-only view of the distances for writers (no copy). */
+    public java.nio.FloatBuffer distanceBuffer() {
+        return java.nio.FloatBuffer.wrap(distanceMetres).asReadOnlyBuffer();
+    }
+
+    /** Read-only view of a layer for writers (no copy). */
+    public java.nio.FloatBuffer layerBuffer(Layer layer) {
+        float[] l = layers.get(layer);
+        if (l == null) {
+            throw new IllegalArgumentException("layer " + layer.fileName() + " was not rendered; request it");
+        }
+        return java.nio.FloatBuffer.wrap(l).asReadOnlyBuffer();
+    }
+}

@@ -1,0 +1,38 @@
+package dempano.panorama;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * How a panorama was made: everything needed to interpret its pixels, and what it cost.
+ *
+ * @param latDeg                viewpoint latitude, degrees
+ * @param lonDeg                viewpoint longitude, degrees
+ * @param groundElevationMetres DEM height at the viewpoint, metres
+ * @param offsetMetres          altitude correction added to the DEM height (NaN if an absolute altitude was given)
+ * @param standingAltitudeMetres ground the observer stands on, metres
+ * @param eyeHeightMetres       eye above the standing altitude, metres
+ * @param eyeAltitudeMetres     the eye, metres above sea level
+ * @param rangeMetres           range of sight, metres
+ * @param refractionCoefficient k
+ * @param depthMode             how distances were obtained
+ * @param nearMetres            near plane
+ * @param farMetres             far plane (STANDARD_24) / culling distance
+ * @param views                 number of perspective views
+ * @param viewWidthPx           view width
+ * @param viewHeightPx          view height
+ * @param tilesUsed             tile names read
+ * @param tilesMissing          tile names needed but absent (sea level)
+ * @param warnings              warnings for the user
+ * @param timingsMillis         stage → wall time, milliseconds, in order
+ * @param glRenderer            the OpenGL renderer string
+ */
+public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
+                               double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
+                               double rangeMetres, double refractionCoefficient, DepthMode depthMode,
+                               double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
+                               List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
+                               Map<String, Double> timingsMillis, String glRenderer) {
+    /** The earth model. */
+    public static final String EARTH_MODEL = "WGS84 ellipsoid (exact ECEF/ENU), heights above sea level taken as ellipsoidal";
+}

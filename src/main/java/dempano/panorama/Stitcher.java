@@ -1,0 +1,107 @@
+package dempano.panorama;
+
+import java.util.stream.IntStream;
+
+/**
+ * Resamples perspective views into the equirectangular panorama. Colour is interpolated
+ * bilinearly; distance is interpolated only between samples of one surface (inverse eye depth,
+ * which is affine across a planar triangle, so exact there) and otherwise taken from the nearest
+ * sample, so no distance is ever a blend of a ridge and what lies behind it.
+ */
+public final class Stitcher {
+    /** Neighbouring samples within this depth ratio are taken as one surface. */
+    static final double SAME_SURFACE_RATIO = 1.05;
+
+    private Stitcher() {
+    }
+
+    /** Converts a capture's raw depth to eye depth, metres (+∞ for sky). */
+    public static double[] eyeDepths(ViewCapture c, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
+        double[] z = new double[c.depth().length];
+        int w = layout.widthPx();
+        for (int i = 0; i < z.length; i++) {
+            float d = c.depth()[i];
+            switch (mode) {
+                case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(d, nearMetres, farMetres);
+                case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
+                case SHADER_RANGE -> {
+                    if (!(d > 0) || Float.isInfinite(d)) {
+                        z[i] = Double.POSITIVE_INFINITY;
+                    } else {
+                        double x = layout.xTanOfPixel(i % w), y = layout.yTanOfPixel(i / w);
+                        z[i] = d / Math.sqrt(1 + x * x + y * y);
+                    }
+                }
+                default -> throw new IllegalStateException();
+            }
+        }
+        return z;
+    }
+
+    /**
+     * Builds colour and distance for every panorama pixel.
+     *
+     * @param eyeDepth per view, eye depths from {@link #eyeDepths}
+     * @param argbOut  receives colour, row-major, row 0 at the top
+     * @param rangeOut receives straight-line distance in metres, +∞ for sky
+     */
+    public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, double[][] eyeDepth,
+                              int[] argbOut, float[] rangeOut) {
+        int width = g.widthPx();
+        IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
+            double el = g.elevationOfRow(row);
+            for (int col = 0; col < width; col++) {
+                double az = g.azimuthOfColumn(col);
+                int view = layout.viewOf(az);
+                double[] p = layout.project(view, az, el);
+                int i = row * width + col;
+                argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
+                rangeOut[i] = (float) range(eyeDepth[view], layout, p);
+            }
+        });
+    }
+
+    private static int clampX(ViewLayout l, int x) {
+        return Math.max(0, Math.min(l.widthPx() - 1, x));
+    }
+
+    private static int clampY(ViewLayout l, int y) {
+        return Math.max(0, Math.min(l.heightPx() - 1, y));
+    }
+
+    static int bilinearColour(byte[] rgba, ViewLayout l, double px, double py) {
+        int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
+        double fx = px - x0, fy = py - y0;
+        double r = 0, gr = 0, b = 0;
+        for (int k = 0; k < 4; k++) {
+            int x = clampX(l, x0 + (k & 1)), y = clampY(l, y0 + (k >> 1));
+            double w = ((k & 1) == 1 ? fx : 1 - fx) * ((k >> 1) == 1 ? fy : 1 - fy);
+            int o = (y * l.widthPx() + x) * 4;
+            r += w * (rgba[o] & 0xff);
+            gr += w * (rgba[o + 1] & 0xff);
+            b += w * (rgba[o + 2] & 0xff);
+        }
+        return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
+    }
+
+    /** Range along the panorama pixel's ray; p = {px, py, xTan, yTan}. */
+    static double range(double[] z, ViewLayout l, double[] p) {
+        int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
+        double fx = p[0] - x0, fy = p[1] - y0;
+        double lo = Double.POSITIVE_INFINITY, hi = 0, invSum = 0, nearestW = -1, nearestZ = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < 4; k++) {
+            int x = clampX(l, x0 + (k & 1)), y = clampY(l, y0 + (k >> 1));
+            double w = ((k & 1) == 1 ? fx : 1 - fx) * ((k >> 1) == 1 ? fy : 1 - fy);
+            double zk = z[y * l.widthPx() + x];
+            lo = Math.min(lo, zk);
+            hi = Math.max(hi, zk);
+            invSum += w / zk;
+            if (w > nearestW) {
+                nearestW = w;
+                nearestZ = zk;
+            }
+        }
+        double eyeDepth = (Double.isFinite(hi) && hi <= lo * SAME_SURFACE_RATIO) ? 1 / invSum : nearestZ;
+        return DepthLinearizer.rangeFromEyeDepth(eyeDepth, p[2], p[3]);
+    }
+}

@@ -1,0 +1,47 @@
+package dempano.render;
+
+import com.jme3.bounding.BoundingBox;
+import com.jme3.scene.Mesh;
+
+/** The azimuths (degrees clockwise from north) under which a mesh's bounding box is seen from the origin. */
+final class AzimuthSector {
+    private AzimuthSector() {
+    }
+
+    /** {fromDeg, spanDeg}, or null when the box surrounds the eye (seen in every direction). */
+    static double[] of(Mesh mesh) {
+        mesh.updateBound();
+        BoundingBox b = (BoundingBox) mesh.getBound();
+        double x0 = b.getCenter().x - b.getXExtent(), x1 = b.getCenter().x + b.getXExtent();
+        double z0 = b.getCenter().z - b.getZExtent(), z1 = b.getCenter().z + b.getZExtent();
+        if (x0 <= 0 && x1 >= 0 && z0 <= 0 && z1 >= 0) {
+            return null;
+        }
+        double first = azimuth(x0, z0), lo = 0, hi = 0;
+        for (double[] c : new double[][] {{x1, z0}, {x0, z1}, {x1, z1}}) {
+            double d = wrap180(azimuth(c[0], c[1]) - first);
+            lo = Math.min(lo, d);
+            hi = Math.max(hi, d);
+        }
+        return new double[] {first + lo, hi - lo};
+    }
+
+    /** True if a sector overlaps [viewFrom, viewFrom + viewSpan] (with a small margin). */
+    static boolean overlaps(double[] sector, double viewFrom, double viewSpan) {
+        if (sector == null) {
+            return true;
+        }
+        double margin = 0.5;
+        double start = ((sector[0] - viewFrom) % 360 + 360) % 360; // sector start relative to the view
+        double end = start + sector[1];
+        return start <= viewSpan + margin || end >= 360 - margin;
+    }
+
+    private static double azimuth(double x, double z) {
+        return Math.toDegrees(Math.atan2(x, -z)); // x east, -z north
+    }
+
+    private static double wrap180(double d) {
+        return ((d + 180) % 360 + 360) % 360 - 180;
+    }
+}

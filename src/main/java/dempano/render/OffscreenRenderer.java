@@ -1,0 +1,340 @@
+package dempano.render;
+
+import com.jme3.app.LegacyApplication;
+import com.jme3.asset.AssetManager;
+import com.jme3.material.Material;
+import com.jme3.material.RenderState;
+import com.jme3.math.Matrix4f;
+import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
+import com.jme3.renderer.Renderer;
+import com.jme3.renderer.ViewPort;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import com.jme3.scene.VertexBuffer;
+import com.jme3.system.AppSettings;
+import com.jme3.system.JmeContext;
+import com.jme3.texture.FrameBuffer;
+import com.jme3.texture.Image;
+import dempano.panorama.DepthMode;
+import dempano.panorama.ViewCapture;
+import dempano.panorama.ViewLayout;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.FloatBuffer;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import org.lwjgl.opengl.GL11;
+import org.lwjgl.opengl.GL30;
+import org.lwjgl.opengl.GL45;
+
+/**
+ * One OpenGL context (headless by default, see {@link GlPlatform}) on its own thread, rendering
+ * perspective views of a scene into a framebuffer with a colour target, a float range target and a
+ * depth buffer, and reading all three back. Thread-safe: calls are serialized onto the GL thread.
+ */
+public final class OffscreenRenderer implements AutoCloseable {
+    private static final Logger LOG = Logger.getLogger(OffscreenRenderer.class.getName());
+    /** Sky colour in the colour image (RGBA, 0..1). */
+    public static final float[] SKY_RGBA = {0.60f, 0.78f, 0.97f, 1f};
+    private static final long START_TIMEOUT_SECONDS = 120;
+
+    private final GlApp app;
+    private final String glRenderer;
+    private final String glVersion;
+    private volatile boolean closed;
+
+    private OffscreenRenderer(GlApp app, String glRenderer, String glVersion) {
+        this.app = app;
+        this.glRenderer = glRenderer;
+        this.glVersion = glVersion;
+    }
+
+    /**
+     * Creates the GL context.
+     *
+     * @throws GlUnavailableException naming what is missing when no context can be created
+     */
+    public static OffscreenRenderer open() {
+        if (System.getenv("DEMPANO_DEBUG") == null) {
+            Logger.getLogger("com.jme3").setLevel(Level.SEVERE);
+        }
+        GlPlatform.configure();
+        GlApp app = new GlApp();
+        AppSettings s = new AppSettings(true);
+        s.setRenderer(GlPlatform.RENDERER);
+        s.setResolution(16, 16);
+        s.setAudioRenderer(null);
+        s.setFrameRate(250); // idle loop sleeps; tasks start within 4 ms
+        s.setVSync(false);
+        s.setGammaCorrection(false);
+        s.setSamples(0);
+        app.setSettings(s);
+        app.setPauseOnLostFocus(false);
+        try {
+            app.start(JmeContext.Type.OffscreenSurface);
+        } catch (RuntimeException e) {
+            throw new GlUnavailableException("cannot start an OpenGL context: " + e.getMessage() + "; " + GlPlatform.hint(), e);
+        }
+        String[] info;
+        try {
+            info = app.ready.get(START_TIMEOUT_SECONDS, TimeUnit.SECONDS);
+        } catch (ExecutionException e) {
+            app.stop(false);
+            throw new GlUnavailableException("cannot create an OpenGL context (" + e.getCause().getMessage() + "); "
+                    + GlPlatform.hint(), e.getCause());
+        } catch (TimeoutException | InterruptedException e) {
+            app.stop(false);
+            throw new GlUnavailableException("no OpenGL context after " + START_TIMEOUT_SECONDS + " s; " + GlPlatform.hint(), e);
+        }
+        return new OffscreenRenderer(app, info[0], info[1]);
+    }
+
+    /** The GL_RENDERER string, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)". */
+    public String glRenderer() {
+        return glRenderer;
+    }
+
+    public String glVersion() {
+        return glVersion;
+    }
+
+    public AssetManager assetManager() {
+        return app.getAssetManager();
+    }
+
+    /** A new terrain material (see {@code dempano/shaders/Terrain.j3md}). */
+    public Material newTerrainMaterial() {
+        return new Material(app.getAssetManager(), "dempano/shaders/Terrain.j3md");
+    }
+
+    /**
+     * Renders the views of a layout, the eye at the scene's origin looking horizontally.
+     *
+     * @param scene       eye-relative scene (x east, y up, z south)
+     * @param nearMetres  near plane
+     * @param farMetres   far plane (STANDARD_24) and culling distance (all modes)
+     * @param release     free the scene's GL buffers afterwards (for single-use scenes)
+     */
+    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
+                                boolean release) {
+        if (closed) {
+            throw new IllegalStateException("renderer is closed");
+        }
+        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release));
+        try {
+            return f.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while rendering", e);
+        } catch (ExecutionException e) {
+            Throwable c = e.getCause();
+            if (c instanceof RuntimeException re) {
+                throw re;
+            }
+            throw new IllegalStateException("rendering failed: " + c, c);
+        }
+    }
+
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            app.stop(true);
+        }
+    }
+
+    /** The standard projection (OpenGL clip z in [-1, 1]) for an off-axis frustum given as image-plane tangents. */
+    static Matrix4f standardProjection(double l, double r, double b, double t, double n, double f) {
+        return new Matrix4f(
+                (float) (2 / (r - l)), 0, (float) ((r + l) / (r - l)), 0,
+                0, (float) (2 / (t - b)), (float) ((t + b) / (t - b)), 0,
+                0, 0, (float) (-(f + n) / (f - n)), (float) (-2 * f * n / (f - n)),
+                0, 0, -1, 0);
+    }
+
+    /** Reversed-Z projection with an infinite far plane (clip z in [0, 1], depth = n / z_e). */
+    static Matrix4f reversedProjection(double l, double r, double b, double t, double n) {
+        return new Matrix4f(
+                (float) (2 / (r - l)), 0, (float) ((r + l) / (r - l)), 0,
+                0, (float) (2 / (t - b)), (float) ((t + b) / (t - b)), 0,
+                0, 0, 0, (float) n,
+                0, 0, -1, 0);
+    }
+
+    private static final class GlApp extends LegacyApplication {
+        final CompletableFuture<String[]> ready = new CompletableFuture<>();
+        private FrameBuffer fb;
+        private int fbWidth, fbHeight;
+        private boolean fbReversed;
+
+        @Override
+        public void initialize() {
+            try {
+                super.initialize();
+                String version = GL11.glGetString(GL11.GL_VERSION);
+                String renderer = GL11.glGetString(GL11.GL_RENDERER);
+                int major = GL11.glGetInteger(GL30.GL_MAJOR_VERSION), minor = GL11.glGetInteger(GL30.GL_MINOR_VERSION);
+                if (major < 4 || (major == 4 && minor < 5)) {
+                    throw new IllegalStateException("OpenGL " + major + "." + minor + " (" + renderer
+                            + ") is too old: dempano needs 4.5 (clip control)");
+                }
+                ready.complete(new String[] {renderer, version});
+            } catch (RuntimeException e) {
+                ready.completeExceptionally(e);
+                throw e;
+            }
+        }
+
+        @Override
+        public void handleError(String errMsg, Throwable t) {
+            // jME would log and carry on (exit code 0); make the failure reach the caller instead.
+            LOG.log(Level.FINE, errMsg, t);
+            if (!ready.isDone()) {
+                ready.completeExceptionally(new IllegalStateException(errMsg + (t != null ? ": " + t.getMessage() : ""), t));
+            }
+            stop(false);
+        }
+
+        @Override
+        public void update() {
+            super.update(); // runs queued tasks
+        }
+
+        private FrameBuffer framebuffer(int w, int h, boolean reversed) {
+            if (fb != null && fbWidth == w && fbHeight == h && fbReversed == reversed) {
+                return fb;
+            }
+            if (fb != null) {
+                renderer.deleteFrameBuffer(fb);
+            }
+            fb = new FrameBuffer(w, h, 1);
+            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RGBA8));
+            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.R32F));
+            fb.setDepthTarget(FrameBuffer.FrameBufferTarget.newTarget(reversed ? Image.Format.Depth32F : Image.Format.Depth24));
+            fb.setMultiTarget(true);
+            fbWidth = w;
+            fbHeight = h;
+            fbReversed = reversed;
+            return fb;
+        }
+
+        ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release) {
+            int w = layout.widthPx(), h = layout.heightPx();
+            boolean reversed = mode.reversedZ();
+            FrameBuffer target = framebuffer(w, h, reversed);
+            Camera cam = new Camera(w, h);
+            double half = layout.halfWidthTan();
+            cam.setFrustum((float) near, (float) far, (float) (-half * near), (float) (half * near),
+                    (float) (layout.topTan() * near), (float) (layout.bottomTan() * near));
+            cam.setProjectionMatrix(reversed
+                    ? reversedProjection(-half, half, layout.bottomTan(), layout.topTan(), near)
+                    : standardProjection(-half, half, layout.bottomTan(), layout.topTan(), near, far));
+            cam.setLocation(Vector3f.ZERO);
+            setDepthState(scene, reversed);
+            scene.updateLogicalState(0);
+            scene.updateGeometricState();
+            ViewPort vp = renderManager.createPreView("dempano-view", cam);
+            vp.setClearFlags(false, false, false);
+            vp.attachScene(scene);
+            vp.setOutputFrameBuffer(target);
+            // Culling by azimuth sector, computed here from each mesh's own bounds (the eye is at the
+            // origin of every view; jME's hierarchical bounds are not relied on).
+            java.util.List<Geometry> geometries = new java.util.ArrayList<>();
+            scene.depthFirstTraversal(sp -> {
+                sp.setCullHint(Spatial.CullHint.Never);
+                if (sp instanceof Geometry g) {
+                    geometries.add(g);
+                }
+            });
+            double[][] sectors = new double[geometries.size()][];
+            for (int i = 0; i < sectors.length; i++) {
+                sectors[i] = AzimuthSector.of(geometries.get(i).getMesh());
+            }
+            ViewCapture[] out = new ViewCapture[layout.views()];
+            ByteBuffer colour = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder());
+            FloatBuffer depth = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder()).asFloatBuffer();
+            try {
+                for (int k = 0; k < layout.views(); k++) {
+                    double az = Math.toRadians(layout.axisAzimuthDeg(k));
+                    cam.lookAtDirection(new Vector3f((float) Math.sin(az), 0, (float) -Math.cos(az)), Vector3f.UNIT_Y);
+                    cam.setLocation(Vector3f.ZERO);
+                    double viewFrom = k * 360.0 / layout.views(), viewSpan = 360.0 / layout.views();
+                    for (int i = 0; i < sectors.length; i++) {
+                        geometries.get(i).setCullHint(AzimuthSector.overlaps(sectors[i], viewFrom, viewSpan)
+                                ? Spatial.CullHint.Never : Spatial.CullHint.Always);
+                    }
+                    renderer.setFrameBuffer(target);
+                    GL45.glClipControl(GL30.GL_LOWER_LEFT, reversed ? GL45.GL_ZERO_TO_ONE : GL45.GL_NEGATIVE_ONE_TO_ONE);
+                    GL11.glDepthMask(true);
+                    GL11.glColorMask(true, true, true, true);
+                    GL30.glClearBufferfv(GL11.GL_COLOR, 0, OffscreenRenderer.SKY_RGBA);
+                    GL30.glClearBufferfv(GL11.GL_COLOR, 1, new float[] {0, 0, 0, 0});
+                    GL30.glClearBufferfv(GL11.GL_DEPTH, 0, new float[] {reversed ? 0f : 1f});
+                    renderManager.render(0, false);
+                    renderer.setFrameBuffer(target);
+                    GL11.glPixelStorei(GL11.GL_PACK_ALIGNMENT, 1);
+                    GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT0);
+                    colour.clear();
+                    GL11.glReadPixels(0, 0, w, h, GL11.GL_RGBA, GL11.GL_UNSIGNED_BYTE, colour);
+                    byte[] rgba = new byte[w * h * 4];
+                    colour.get(rgba);
+                    depth.clear();
+                    if (mode == DepthMode.SHADER_RANGE) {
+                        GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
+                        GL11.glReadPixels(0, 0, w, h, GL11.GL_RED, GL11.GL_FLOAT, depth);
+                    } else {
+                        GL11.glReadPixels(0, 0, w, h, GL11.GL_DEPTH_COMPONENT, GL11.GL_FLOAT, depth);
+                    }
+                    GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT0);
+                    float[] d = new float[w * h];
+                    depth.get(d);
+                    int err = GL11.glGetError();
+                    if (err != GL11.GL_NO_ERROR) {
+                        throw new IllegalStateException("OpenGL error 0x" + Integer.toHexString(err) + " rendering view " + k);
+                    }
+                    out[k] = new ViewCapture(k, rgba, d);
+                }
+            } finally {
+                GL45.glClipControl(GL30.GL_LOWER_LEFT, GL45.GL_NEGATIVE_ONE_TO_ONE);
+                vp.detachScene(scene);
+                renderManager.removePreView(vp);
+                renderer.setFrameBuffer(null);
+                if (release) {
+                    deleteGlBuffers(renderer, scene);
+                }
+            }
+            return out;
+        }
+
+        private static void setDepthState(Spatial s, boolean reversed) {
+            if (s instanceof Geometry g) {
+                RenderState rs = g.getMaterial().getAdditionalRenderState();
+                rs.setDepthFunc(reversed ? RenderState.TestFunction.GreaterOrEqual : RenderState.TestFunction.LessOrEqual);
+                rs.setFaceCullMode(RenderState.FaceCullMode.Off);
+            } else if (s instanceof Node n) {
+                for (Spatial c : n.getChildren()) {
+                    setDepthState(c, reversed);
+                }
+            }
+        }
+
+        private static void deleteGlBuffers(Renderer renderer, Spatial s) {
+            if (s instanceof Geometry g) {
+                for (VertexBuffer vb : g.getMesh().getBufferList()) {
+                    renderer.deleteBuffer(vb);
+                }
+            } else if (s instanceof Node n) {
+                for (Spatial c : n.getChildren()) {
+                    deleteGlBuffers(renderer, c);
+                }
+            }
+        }
+    }
+}

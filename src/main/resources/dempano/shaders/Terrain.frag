@@ -1,0 +1,36 @@
+in vec3 vPosition;
+in vec3 vNormal;
+in float vElevation;
+uniform float m_RangeMetres;
+uniform float m_HazeMetres;
+uniform vec3 m_SunDirection;
+layout(location = 0) out vec4 outColour;
+layout(location = 1) out vec4 outRange;
+
+// Hypsometric tint: lowland green, forest, pasture, rock, snow.
+vec3 tint(float h) {
+    if (h < 0.5) return vec3(0.28, 0.42, 0.55);                       // sea and lakes at 0 m
+    vec3 c0 = vec3(0.36, 0.52, 0.30), c1 = vec3(0.30, 0.42, 0.24);
+    vec3 c2 = vec3(0.55, 0.55, 0.38), c3 = vec3(0.50, 0.46, 0.42), c4 = vec3(0.93, 0.94, 0.96);
+    if (h < 800.0) return mix(c0, c1, h / 800.0);
+    if (h < 1800.0) return mix(c1, c2, (h - 800.0) / 1000.0);
+    if (h < 2600.0) return mix(c2, c3, (h - 1800.0) / 800.0);
+    if (h < 3200.0) return mix(c3, c4, (h - 2600.0) / 600.0);
+    return c4;
+}
+
+void main() {
+    // The exact range cut (ground distance ≈ horizontal distance in the eye's frame).
+    if (length(vPosition.xz) > m_RangeMetres) {
+        discard;
+    }
+    float range = length(vPosition);
+    vec3 n = normalize(vNormal);
+    float light = 0.30 + 0.70 * max(dot(n, m_SunDirection), 0.0);
+    vec3 colour = tint(vElevation) * light;
+    // Aerial perspective: far terrain fades toward a blue-grey that stays darker than the sky.
+    float haze = 1.0 - exp(-range / m_HazeMetres);
+    colour = mix(colour, vec3(0.62, 0.68, 0.78), 0.85 * haze);
+    outColour = vec4(colour, 1.0);
+    outRange = vec4(range, 0.0, 0.0, 1.0);
+}
