@@ -37,11 +37,13 @@ import java.util.function.Consumer;
  */
 public final class PanoramaRenderer implements AutoCloseable {
     private final DemSource dem;
+    private final OffscreenRenderer.Handle handle;
     private final OffscreenRenderer gl;
 
-    private PanoramaRenderer(DemSource dem, OffscreenRenderer gl) {
+    private PanoramaRenderer(DemSource dem, OffscreenRenderer.Handle handle) {
         this.dem = dem;
-        this.gl = gl;
+        this.handle = handle;
+        this.gl = handle.renderer();
     }
 
     /**
@@ -50,7 +52,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws dempano.render.GlUnavailableException when no OpenGL context can be had (message says why)
      */
     public static PanoramaRenderer open(DemSource dem) {
-        return new PanoramaRenderer(dem, OffscreenRenderer.open());
+        return new PanoramaRenderer(dem, OffscreenRenderer.acquire());
     }
 
     /** The OpenGL renderer in use. */
@@ -147,7 +149,7 @@ public final class PanoramaRenderer implements AutoCloseable {
 
     @Override
     public void close() {
-        gl.close();
+        handle.close();
     }
 
     /** Crops an auto elevation range to the terrain. */

@@ -33,18 +33,17 @@ final class GlPlatform {
         return p == null ? "headless" : p.toLowerCase(Locale.ROOT);
     }
 
-    /** Must run before jME initialises GLFW (once per JVM). */
+    /** Must run before jME initialises GLFW (each time: init hints apply to the next glfwInit). */
     static synchronized void configure() {
-        if (configured) {
-            return;
-        }
         String choice = choice();
         switch (choice) {
             case "headless", "egl", "null" -> {
                 glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_NULL);
-                // jME resets window hints (glfwDefaultWindowHints) before applying its renderer's
-                // hints from a private table; wrap our renderer's entry to add the EGL hint there.
-                addWindowHint(() -> glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API));
+                if (!configured) {
+                    // jME resets window hints (glfwDefaultWindowHints) before applying its renderer's
+                    // hints from a private table; wrap our renderer's entry to add the EGL hint there.
+                    addWindowHint(() -> glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API));
+                }
             }
             case "x11", "glx" -> glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
             case "native", "default" -> {

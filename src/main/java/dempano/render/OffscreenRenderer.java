@@ -39,7 +39,7 @@ import org.lwjgl.opengl.GL45;
  * perspective views of a scene into a framebuffer with a colour target, a float range target and a
  * depth buffer, and reading all three back. Thread-safe: calls are serialized onto the GL thread.
  */
-public final class OffscreenRenderer implements AutoCloseable {
+public final class OffscreenRenderer {
     private static final Logger LOG = Logger.getLogger(OffscreenRenderer.class.getName());
     /** Sky colour in the colour image (RGBA, 0..1). */
     public static final float[] SKY_RGBA = {0.60f, 0.78f, 0.97f, 1f};
@@ -56,12 +56,61 @@ public final class OffscreenRenderer implements AutoCloseable {
         this.glVersion = glVersion;
     }
 
+    // GLFW allows one context owner per process here (closing one terminates GLFW for all), so every
+    // user shares one context, released when the last user closes it.
+    private static OffscreenRenderer shared;
+    private static int users;
+
     /**
-     * Creates the GL context.
+     * A handle on the process's GL context, created on first use. Each handle must be closed; the
+     * context ends with the last.
      *
      * @throws GlUnavailableException naming what is missing when no context can be created
      */
-    public static OffscreenRenderer open() {
+    public static synchronized Handle acquire() {
+        if (shared == null || shared.closed) {
+            shared = open();
+            users = 0;
+        }
+        users++;
+        return new Handle(shared);
+    }
+
+    private static synchronized void release() {
+        if (--users == 0 && shared != null) {
+            shared.close();
+            shared = null;
+        }
+    }
+
+    /** A user's share of the GL context. */
+    public static final class Handle implements AutoCloseable {
+        private final OffscreenRenderer renderer;
+        private boolean closed;
+
+        private Handle(OffscreenRenderer renderer) {
+            this.renderer = renderer;
+        }
+
+        public OffscreenRenderer renderer() {
+            if (closed) {
+                throw new IllegalStateException("renderer handle is closed");
+            }
+            return renderer;
+        }
+
+        @Override
+        public void close() {
+            synchronized (OffscreenRenderer.class) {
+                if (!closed) {
+                    closed = true;
+                    release();
+                }
+            }
+        }
+    }
+
+    private static OffscreenRenderer open() {
         if (System.getenv("DEMPANO_DEBUG") == null) {
             Logger.getLogger("com.jme3").setLevel(Level.SEVERE);
         }
@@ -142,8 +191,7 @@ public final class OffscreenRenderer implements AutoCloseable {
         }
     }
 
-    @Override
-    public void close() {
+    private void close() {
         if (!closed) {
             closed = true;
             app.stop(true);
