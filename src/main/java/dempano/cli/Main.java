@@ -108,7 +108,7 @@ public final class Main implements Callable<Integer> {
             throw new IllegalArgumentException("--dem-dir is needed with --lat/--lon");
         }
         Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
-        double lat = demo ? DemoTerrain.VIEW_LAT_DEG : latDeg, lon = demo ? DemoTerrain.VIEW_LON_DEG : lonDeg;
+        double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         double range = rangeKm != null ? rangeKm * 1000 : (demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES);
         Set<Layer> wanted = EnumSet.noneOf(Layer.class);
         if (layers != null) {

@@ -14,8 +14,6 @@ import java.util.Random;
 public final class DemoTerrain {
     /** Where the CLI keeps it, relative to the project. */
     public static final Path DEFAULT_DIR = Path.of("testdata", "demo-dem");
-    /** The demo viewpoint: a knoll with mountains all around. */
-    public static final double VIEW_LAT_DEG = 0.05, VIEW_LON_DEG = 0.02;
     private static final long SEED = 20261121L;
     private static final int N = HgtTile.SRTM3_SAMPLES;
 
@@ -27,12 +25,33 @@ public final class DemoTerrain {
         double h = 300 + 120 * Math.sin(latDeg * 9.1) * Math.cos(lonDeg * 7.3) + 150 * (latDeg + lonDeg);
         for (double[] m : massifs) {
             double dy = (latDeg - m[0]) * 111.0, dx = (lonDeg - m[1]) * 111.0; // km near the equator
-            h += m[2] * Math.exp(-(dx * dx + dy * dy) / (2 * m[3] * m[3]));
+            h += m[2] * Math.exp(-Math.sqrt(dx * dx + dy * dy) / m[3]); // peaked, alpine-like massifs
         }
         // A ridge running north-east, 25 km away.
         double along = ((latDeg - 0.25) + (lonDeg + 0.1)) / Math.sqrt(2), across = ((latDeg - 0.25) - (lonDeg + 0.1)) / Math.sqrt(2);
         h += 1400 * Math.exp(-Math.pow(across * 111 / 3.0, 2)) * Math.exp(-Math.pow(along * 111 / 40.0, 2));
         return Math.max(0, h);
+    }
+
+    /**
+     * The demo viewpoint, {latDeg, lonDeg}: the top of the lowest massif within 0.35° of 0°N 0°E,
+     * so that the panorama shows higher mountains all around.
+     */
+    public static double[] viewpoint() {
+        double[][] m = massifs();
+        double best = Double.MAX_VALUE;
+        double[] at = null;
+        for (double[] c : m) {
+            if (Math.hypot(c[0], c[1]) > 0.35) {
+                continue;
+            }
+            double h = heightMetres(c[0], c[1], m);
+            if (h < best) {
+                best = h;
+                at = new double[] {c[0], c[1]};
+            }
+        }
+        return at;
     }
 
     static double[][] massifs() {
