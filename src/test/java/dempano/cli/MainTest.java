@@ -1,0 +1,73 @@
+package dempano.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class MainTest {
+    /** Runs the CLI capturing stderr+stdout. */
+    static String[] run(String... args) {
+        PrintStream oldErr = System.err, oldOut = System.out;
+        ByteArrayOutputStream buf = new ByteArrayOutputStream();
+        PrintStream ps = new PrintStream(buf, true, StandardCharsets.UTF_8);
+        System.setErr(ps);
+        System.setOut(ps);
+        int code;
+        try {
+            code = Main.run(args);
+        } finally {
+            System.setErr(oldErr);
+            System.setOut(oldOut);
+        }
+        return new String[] {Integer.toString(code), buf.toString(StandardCharsets.UTF_8)};
+    }
+
+    // Bad arguments: a clear message naming the problem, exit 2, never a stack trace.
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "--lat 91 --lon 8 --dem-dir .|latitude must be in",
+            "--lat NaN --lon 8 --dem-dir .|latitude must be in",
+            "--lat 46 --lon 8 --dem-dir . --ppd -3|pixels per degree",
+            "--lat 46 --lon 8 --dem-dir . --range-km 0|range must be",
+            "--lat 46 --lon 8 --dem-dir . --depth-mode fast|unknown depth mode",
+            "--lat 46 --lon 8 --dem-dir . --layers colour|unknown layer",
+            "--lat 46 --lon 8 --dem-dir . --elevation-range 30:-30|elevation range",
+            "--lat 46 --dem-dir .|give both --lat and --lon",
+            "--lat 46 --lon 8|--dem-dir is needed",
+            "--lat abc --lon 8 --dem-dir .|Invalid value",
+            "--bogus|Unknown option",
+            "--lat 46 --lon 8 --dem-dir . --missing-tiles maybe|--missing-tiles must be",
+    })
+    void badArgumentsExitTwoWithAMessage(String args, String expected) {
+        String[] r = run(args.split(" "));
+        assertEquals("2", r[0], r[1]);
+        assertTrue(r[1].contains(expected), r[1]);
+        assertFalse(r[1].contains("\tat "), "no stack trace: " + r[1]);
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {"--lat 46 --lon 8 --dem-dir /nonexistent/dem|does not exist"})
+    void inputProblemsExitOne(String args, String expected) {
+        String[] r = run(args.split(" "));
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains(expected), r[1]);
+    }
+
+    @ParameterizedTest
+    @CsvSource({"--help"})
+    void helpDocumentsEveryOptionWithUnits(String arg) {
+        String[] r = run(arg);
+        assertEquals("0", r[0]);
+        for (String opt : new String[] {"--lat", "--lon", "--dem-dir", "--out", "--ppd", "--range-km", "--offset-m",
+                "--altitude-m", "--eye-height-m", "--refraction", "--elevation-range", "--depth-mode", "--layers"}) {
+            assertTrue(r[1].contains(opt), opt + " missing from help");
+        }
+        assertTrue(r[1].contains("metres") && r[1].contains("degrees") && r[1].contains("default"));
+    }
+}
