@@ -65,6 +65,8 @@ public final class Main implements Callable<Integer> {
     double supersampling;
     @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
     int views;
+    @Option(names = "--repeat", description = "Render this many times in one process and print a timing table (cold = run 1, warm = the rest); files are written once (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    int repeat;
     @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
     String missingTiles;
 
@@ -134,10 +136,25 @@ public final class Main implements Callable<Integer> {
         DemDirectory dem = new DemDirectory(dir);
         long t0 = System.nanoTime();
         System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
-        Panorama p;
+        if (repeat < 1 || repeat > 1000) {
+            throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
+        }
+        Panorama p = null;
+        java.util.List<String> table = new java.util.ArrayList<>();
         try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
             System.err.println("  OpenGL: " + r.glRenderer());
-            p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
+            for (int i = 1; i <= repeat; i++) {
+                long start = System.nanoTime();
+                p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
+                table.add(String.format(Locale.ROOT, "| %d | %s | %.0f | %s |", i, i == 1 ? "cold" : "warm",
+                        (System.nanoTime() - start) / 1e6, p.metadata().timingsMillis().entrySet().stream()
+                                .map(e -> e.getKey() + " " + Math.round(e.getValue())).collect(java.util.stream.Collectors.joining(", "))));
+            }
+        }
+        if (repeat > 1) {
+            System.out.println("| run | state | total ms | stages ms |");
+            System.out.println("|---|---|---|---|");
+            table.forEach(System.out::println);
         }
         for (String w : p.metadata().warnings()) {
             System.err.println("  warning: " + w);
