@@ -34,4 +34,10 @@ public record Refraction(double coefficient) {
         double r = Ellipsoid.MEAN_RADIUS_METRES;
         return 2 * r * Math.asin(Math.min(1, chordMetres / (2 * r)));
     }
+
+    /** Ground distance (metres, as above) between two points' feet on the ellipsoid, given in ECEF metres. */
+    public static double groundDistanceBetweenFeetMetres(double[] footA, double[] footB) {
+        double dx = footA[0] - footB[0], dy = footA[1] - footB[1], dz = footA[2] - footB[2];
+        return groundDistanceFromChordMetres(Math.sqrt(dx * dx + dy * dy + dz * dz));
+    }
 }

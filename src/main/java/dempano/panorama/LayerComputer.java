@@ -57,8 +57,7 @@ public final class LayerComputer {
                 }
                 if (elev != null) {
                     Ellipsoid.toEcef(geo[0], geo[1], 0, foot);
-                    double chord = Math.sqrt(sq(foot[0] - eyeFoot[0]) + sq(foot[1] - eyeFoot[1]) + sq(foot[2] - eyeFoot[2]));
-                    elev[i] = (float) (geo[2] - refraction.liftMetres(Refraction.groundDistanceFromChordMetres(chord)));
+                    elev[i] = (float) (geo[2] - refraction.liftMetres(Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot)));
                 }
                 if (ground != null) {
                     ground[i] = (float) Geodesy.distanceMetres(eye.originLatDeg(), eye.originLonDeg(), geo[0], geo[1]);
@@ -66,9 +65,5 @@ public final class LayerComputer {
             }
         });
         return out;
-    }
-
-    private static double sq(double v) {
-        return v * v;
     }
 }

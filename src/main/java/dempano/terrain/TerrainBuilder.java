@@ -220,8 +220,7 @@ public final class TerrainBuilder {
                     ci = Math.max(0, Math.min(sinLon.length - 1, ci));
                 }
                 Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
-                double chord = Math.sqrt(sq(foot[0] - eyeFoot[0]) + sq(foot[1] - eyeFoot[1]) + sq(foot[2] - eyeFoot[2]));
-                double ground = Refraction.groundDistanceFromChordMetres(chord);
+                double ground = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
                 nearest = Math.min(nearest, ground);
                 double h = y + refraction.liftMetres(ground);
                 // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
@@ -283,10 +282,6 @@ public final class TerrainBuilder {
                 mesh.clearBuffer(type);
             }
             mesh.setBuffer(type, components, BufferUtils.createFloatBuffer(data));
-        }
-
-        private static double sq(double v) {
-            return v * v;
         }
     }
 }
