@@ -109,11 +109,6 @@ public final class Panorama {
         return img;
     }
 
-    // Package-level access for writers in this library without copying.
-    float[] distanceArrayUnsafe() {
-        return distanceMetres;
-    }
-
     /** Read-only view of the distances for writers (no copy). */
     public java.nio.FloatBuffer distanceBuffer() {
         return java.nio.FloatBuffer.wrap(distanceMetres).asReadOnlyBuffer();

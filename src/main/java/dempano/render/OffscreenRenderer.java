@@ -250,11 +250,6 @@ public final class OffscreenRenderer {
             stop(false);
         }
 
-        @Override
-        public void update() {
-            super.update(); // runs queued tasks
-        }
-
         private FrameBuffer framebuffer(int w, int h, boolean reversed) {
             if (fb != null && fbWidth == w && fbHeight == h && fbReversed == reversed) {
                 return fb;
