@@ -43,7 +43,19 @@ public final class PanoramaRenderer implements AutoCloseable {
     private PanoramaRenderer(DemSource dem, OffscreenRenderer.Handle handle) {
         this.dem = dem;
         this.handle = handle;
-        this.gl = handle.renderer();
+        this.gl = handle == null ? null : handle.renderer();
+    }
+
+    /** Name of the CPU reference renderer, as metadata reports it. */
+    public static final String REFERENCE_RENDERER = "dempano CPU reference (horizon sweep, double precision)";
+
+    /**
+     * Opens a renderer that needs no OpenGL: the exact CPU reference
+     * ({@link dempano.reference.ReferenceRenderer}). Same requests and outputs; the depth mode,
+     * views and supersampling do not apply. Slower than a GPU, exact to micrometres.
+     */
+    public static PanoramaRenderer openReference(DemSource dem) {
+        return new PanoramaRenderer(dem, null);
     }
 
     /**
@@ -57,7 +69,7 @@ public final class PanoramaRenderer implements AutoCloseable {
 
     /** The OpenGL renderer in use. */
     public String glRenderer() {
-        return gl.glRenderer();
+        return gl == null ? REFERENCE_RENDERER : gl.glRenderer();
     }
 
     public Panorama render(PanoramaRequest request) {
@@ -80,6 +92,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         Viewpoint eye = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
+        if (gl == null) {
+            return renderReference(req, mosaic, eye, timings, t, progress);
+        }
         progress.accept("building terrain mesh");
         Material material = gl.newTerrainMaterial();
         material.setFloat("RangeMetres", (float) req.rangeMetres());
@@ -114,15 +129,34 @@ public final class PanoramaRenderer implements AutoCloseable {
         int[] argb = new int[geometry.widthPx() * geometry.heightPx()];
         float[] distance = new float[argb.length];
         Stitcher.stitch(geometry, layout, captures, eyeDepth, argb, distance);
-        if (er.auto()) {
+        t = lap(timings, "stitch", t);
+        return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
+                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY);
+    }
+
+    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, Map<String, Double> timings,
+                                     long t, Consumer<String> progress) {
+        ElevationRange er = req.elevationRange();
+        PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
+        progress.accept("sweeping " + geometry.widthPx() + " columns on the CPU");
+        var result = dempano.reference.ReferenceRenderer.render(mosaic, eye, req.refraction(), req.rangeMetres(),
+                geometry, true);
+        t = lap(timings, "render", t);
+        return finish(req, mosaic, eye, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
+                req.views(), 0, 0, Double.POSITIVE_INFINITY);
+    }
+
+    private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, PanoramaGeometry geometry, int[] argb,
+                            float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
+                            int views, int viewWidth, int viewHeight, double far) {
+        if (req.elevationRange().auto()) {
             PanoramaGeometry cropped = AutoCrop.crop(geometry, distance);
             int skip = (int) Math.round((geometry.topElevationDeg() - cropped.topElevationDeg()) * geometry.pixelsPerDegree());
             argb = AutoCrop.rows(argb, geometry.widthPx(), skip, cropped.heightPx());
             distance = AutoCrop.rows(distance, geometry.widthPx(), skip, cropped.heightPx());
             geometry = cropped;
+            t = lap(timings, "crop", t);
         }
-        t = lap(timings, "stitch", t);
-
         if (!req.layers().isEmpty()) {
             progress.accept("computing layers " + req.layers());
         }
@@ -135,9 +169,8 @@ public final class PanoramaRenderer implements AutoCloseable {
         mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
         PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
-                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), req.nearMetres(),
-                req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, req.views(),
-                layout.widthPx(), layout.heightPx(), used, missing, mosaic.warnings(), timings, gl.glRenderer());
+                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), req.nearMetres(), far, views,
+                viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer());
         return new Panorama(geometry, argb, distance, layers, meta);
     }
 
@@ -149,7 +182,9 @@ public final class PanoramaRenderer implements AutoCloseable {
 
     @Override
     public void close() {
-        handle.close();
+        if (handle != null) {
+            handle.close();
+        }
     }
 
     /** Crops an auto elevation range to the terrain. */

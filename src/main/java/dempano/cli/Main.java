@@ -65,6 +65,9 @@ public final class Main implements Callable<Integer> {
     double supersampling;
     @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
     int views;
+    @Option(names = "--renderer", paramLabel = "opengl|reference", description = "opengl (default; GPU or Mesa llvmpipe) or reference (exact CPU horizon sweep, no OpenGL needed; slower).", defaultValue = "opengl")
+    String renderer;
+
     @Option(names = "--repeat", description = "Render this many times in one process and print a timing table (cold = run 1, warm = the rest); files are written once (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     int repeat;
     @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
@@ -141,8 +144,13 @@ public final class Main implements Callable<Integer> {
         }
         Panorama p = null;
         java.util.List<String> table = new java.util.ArrayList<>();
-        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
-            System.err.println("  OpenGL: " + r.glRenderer());
+        boolean reference = switch (renderer.toLowerCase(Locale.ROOT)) {
+            case "opengl", "gl" -> false;
+            case "reference", "cpu" -> true;
+            default -> throw new IllegalArgumentException("--renderer must be opengl or reference, got " + renderer);
+        };
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+            System.err.println("  renderer: " + r.glRenderer());
             for (int i = 1; i <= repeat; i++) {
                 long start = System.nanoTime();
                 p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));

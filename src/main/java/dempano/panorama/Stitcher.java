@@ -84,24 +84,66 @@ public final class Stitcher {
         return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
     }
 
-    /** Range along the panorama pixel's ray; p = {px, py, xTan, yTan}. */
+    /** Largest second difference of 1/z, relative to the adjacent first differences, that still counts as one plane. */
+    static final double PLANE_TOLERANCE = 0.3;
+
+    /**
+     * Range along the panorama pixel's ray; p = {px, py, xTan, yTan}.
+     *
+     * <p>On a plane 1/z is linear in view coordinates, so where the 4×4 view samples around the
+     * point are linear in 1/z (every second difference through the central 2×2, along rows and
+     * columns, is tiny beside the first differences) bilinear interpolation of 1/z is exact, even at
+     * grazing incidence where neighbours differ by tens of per cent. Otherwise samples within
+     * {@link #SAME_SURFACE_RATIO} of each other are interpolated the same way (a smooth surface), and
+     * anything else (a silhouette) takes the nearest sample: a distance really seen, never a blend.
+     */
     static double range(double[] z, ViewLayout l, double[] p) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         double fx = p[0] - x0, fy = p[1] - y0;
+        double[][] w = new double[4][4]; // [dy + 1][dx + 1] of 1/z for dy, dx in -1..2
+        for (int dy = -1; dy <= 2; dy++) {
+            for (int dx = -1; dx <= 2; dx++) {
+                w[dy + 1][dx + 1] = 1 / z[clampY(l, y0 + dy) * l.widthPx() + clampX(l, x0 + dx)];
+            }
+        }
         double lo = Double.POSITIVE_INFINITY, hi = 0, invSum = 0, nearestW = -1, nearestZ = Double.POSITIVE_INFINITY;
         for (int k = 0; k < 4; k++) {
-            int x = clampX(l, x0 + (k & 1)), y = clampY(l, y0 + (k >> 1));
-            double w = ((k & 1) == 1 ? fx : 1 - fx) * ((k >> 1) == 1 ? fy : 1 - fy);
-            double zk = z[y * l.widthPx() + x];
+            double weight = ((k & 1) == 1 ? fx : 1 - fx) * ((k >> 1) == 1 ? fy : 1 - fy);
+            double zk = 1 / w[1 + (k >> 1)][1 + (k & 1)];
             lo = Math.min(lo, zk);
             hi = Math.max(hi, zk);
-            invSum += w / zk;
-            if (w > nearestW) {
-                nearestW = w;
+            invSum += weight / zk;
+            if (weight > nearestW) {
+                nearestW = weight;
                 nearestZ = zk;
             }
         }
-        double eyeDepth = (Double.isFinite(hi) && hi <= lo * SAME_SURFACE_RATIO) ? 1 / invSum : nearestZ;
+        double eyeDepth;
+        if (Double.isFinite(hi) && (hi <= lo * SAME_SURFACE_RATIO || linear(w))) {
+            eyeDepth = 1 / invSum;
+        } else {
+            eyeDepth = nearestZ;
+        }
         return DepthLinearizer.rangeFromEyeDepth(eyeDepth, p[2], p[3]);
+    }
+
+    /** True when 1/z is linear (to {@link #PLANE_TOLERANCE}) along the rows and columns through the central 2×2. */
+    static boolean linear(double[][] w) {
+        for (int i = 1; i <= 2; i++) {
+            for (int j = 1; j <= 2; j++) {
+                if (!linear3(w[i][j - 1], w[i][j], w[i][j + 1]) || !linear3(w[i - 1][j], w[i][j], w[i + 1][j])) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static boolean linear3(double a, double b, double c) {
+        if (a == 0 || b == 0 || c == 0) {
+            return false; // sky (1/∞) in the neighbourhood
+        }
+        double second = Math.abs(a - 2 * b + c);
+        return second <= PLANE_TOLERANCE * (Math.abs(b - a) + Math.abs(c - b)) + 1e-6 * Math.abs(b);
     }
 }

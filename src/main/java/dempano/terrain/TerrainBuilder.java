@@ -236,6 +236,8 @@ public final class TerrainBuilder {
             if (nearest > rangeMetres + 2000) {
                 return false;
             }
+            // Block-relative row and column of the patch's first (north-west) vertex.
+            int gridRow0 = Math.round(pos.get(2) + t.z - minZ), gridCol0 = Math.round(pos.get(0) + t.x - minX);
             // Normals from the exact positions: central differences over the patch grid.
             int side = (int) Math.round(Math.sqrt(n));
             float[] normals = new float[n * 3];
@@ -258,6 +260,33 @@ public final class TerrainBuilder {
                 normals[3 * k + 1] = ny / len;
                 normals[3 * k + 2] = nz / len;
             }
+            // Our own triangle list (jME's strip splits cells relative to each patch): the split is fixed
+            // to the mosaic grid, so the CPU reference can intersect exactly the same surface.
+            short[] indices = new short[(side - 1) * (side - 1) * 6];
+            int w = 0;
+            for (int gi = 0; gi < side - 1; gi++) {
+                for (int gj = 0; gj < side - 1; gj++) {
+                    int nw = gi * side + gj, ne = nw + 1, sw = nw + side, se = sw + 1;
+                    // Winding as jME's (counter-clockwise seen from above).
+                    if (Triangulation.splitsNorthWestToSouthEast(blockRow + gridRow0 + gi, blockCol + gridCol0 + gj)) {
+                        w = put(indices, w, se, ne, nw);
+                        w = put(indices, w, nw, sw, se);
+                    } else {
+                        w = put(indices, w, sw, se, ne);
+                        w = put(indices, w, sw, ne, nw);
+                    }
+                }
+            }
+            mesh.setMode(Mesh.Mode.Triangles);
+            VertexBuffer oldIndex = mesh.getBuffer(VertexBuffer.Type.Index);
+            if (oldIndex != null) {
+                if (oldIndex.getData() != null && oldIndex.getData().isDirect()) {
+                    BufferUtils.destroyDirectBuffer(oldIndex.getData());
+                }
+                mesh.clearBuffer(VertexBuffer.Type.Index);
+            }
+            mesh.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createShortBuffer(indices));
+            mesh.updateCounts();
             replace(mesh, VertexBuffer.Type.Position, 3, out);
             replace(mesh, VertexBuffer.Type.Normal, 3, normals);
             replace(mesh, VertexBuffer.Type.TexCoord, 2, elevation);
@@ -271,6 +300,13 @@ public final class TerrainBuilder {
             mesh.updateBound();
             p.setModelBound(mesh.getBound().clone());
             return true;
+        }
+
+        private static int put(short[] a, int w, int i, int j, int k) {
+            a[w] = (short) i;
+            a[w + 1] = (short) j;
+            a[w + 2] = (short) k;
+            return w + 3;
         }
 
         private static void replace(Mesh mesh, VertexBuffer.Type type, int components, float[] data) {
