@@ -65,6 +65,12 @@ public final class Main implements Callable<Integer> {
     double supersampling;
     @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
     int views;
+    @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (.txt as de Ferranti's alps.txt, .csv name,lat,lon,elevation, .geojson OSM peaks): writes P-summits.json, P-summits.csv and P-labels.png.")
+    Path summitsFile;
+
+    @Option(names = "--lenient-summits", description = "Skip bad lines of the summit list (reported) instead of failing.")
+    boolean lenientSummits;
+
     @Option(names = "--renderer", paramLabel = "opengl|reference", description = "opengl (default; GPU or Mesa llvmpipe) or reference (exact CPU horizon sweep, no OpenGL needed; slower).", defaultValue = "opengl")
     String renderer;
 
@@ -92,7 +98,8 @@ public final class Main implements Callable<Integer> {
                 err.println("dempano: " + ex.getMessage());
                 return 2;
             }
-            if (ex instanceof DemException || ex instanceof GlUnavailableException || ex instanceof java.io.IOException) {
+            if (ex instanceof DemException || ex instanceof GlUnavailableException || ex instanceof java.io.IOException
+                    || ex instanceof dempano.summits.SummitFormatException) {
                 err.println("dempano: " + ex.getMessage());
                 return 1;
             }
@@ -137,6 +144,14 @@ public final class Main implements Callable<Integer> {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
         DemDirectory dem = new DemDirectory(dir);
+        dempano.summits.SummitList summitList = null;
+        if (summitsFile != null) {
+            // Read before rendering: a bad list fails fast.
+            summitList = dempano.summits.SummitReader.read(summitsFile, lenientSummits);
+            for (String skipped : summitList.skipped()) {
+                System.err.println("  summit list " + summitsFile + ": skipped " + skipped);
+            }
+        }
         long t0 = System.nanoTime();
         System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
         if (repeat < 1 || repeat > 1000) {
@@ -167,7 +182,13 @@ public final class Main implements Callable<Integer> {
         for (String w : p.metadata().warnings()) {
             System.err.println("  warning: " + w);
         }
-        var files = PanoramaWriter.write(p, out, pfm);
+        var files = new java.util.ArrayList<>(PanoramaWriter.write(p, out, pfm));
+        if (summitList != null) {
+            var sightings = p.summits(summitList);
+            files.addAll(dempano.io.SummitWriter.write(p, sightings, out));
+            System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),
+                    sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
+        }
         System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, files);
         System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms%n",
                 p.metadata().eyeAltitudeMetres(), p.metadata().groundElevationMetres(), p.widthPx(), p.heightPx(),

@@ -28,6 +28,17 @@ public final class DepthLinearizer {
         return 2 * farMetres * nearMetres / (farMetres + nearMetres - zn * (farMetres - nearMetres));
     }
 
+    /**
+     * What a 24-bit fixed-point depth buffer stores of a window depth in [0, 1]: the nearest of
+     * 2²⁴ − 1 steps. Mesa's llvmpipe may keep more bits than the 24 asked for, so the thesis's
+     * method applies this explicitly, reproducing a 24-bit GPU on any driver (idempotent where the
+     * buffer is 24-bit already).
+     */
+    public static double quantize24(double depthBufferValue) {
+        double steps = (1 << 24) - 1;
+        return Math.rint(Math.max(0, Math.min(1, depthBufferValue)) * steps) / steps;
+    }
+
     /** Reversed-Z with an infinite far plane: window depth = n / z_e. */
     public static double reversedDepthBufferValue(double eyeDepthMetres, double nearMetres) {
         return nearMetres / eyeDepthMetres;

@@ -19,10 +19,16 @@ import java.util.Arrays;
  * @param skylineMeanAbsPx   mean over columns of |skyline row − reference skyline row|, pixels
  * @param skylineMaxAbsPx    maximum of the same
  * @param skylineColumnsOff  share of columns whose skyline row differs
+ * @param farMedianRelative  median relative error over pixels whose reference distance exceeds
+ *                           {@link #FAR_METRES} (where depth-buffer precision shows; NaN if none)
+ * @param farP99Relative     99th percentile of the same
  */
 public record DistanceComparison(long comparedPixels, double medianRelative, double p95Relative, double p99Relative,
                                  double maxRelative, double shareOver5Percent, long skyMismatchPixels,
-                                 double skylineMeanAbsPx, int skylineMaxAbsPx, double skylineColumnsOff) {
+                                 double skylineMeanAbsPx, int skylineMaxAbsPx, double skylineColumnsOff,
+                                 double farMedianRelative, double farP99Relative) {
+    /** Distance beyond which pixels count as far, metres. */
+    public static final double FAR_METRES = 20_000;
 
     /**
      * Compares two row-major maps of the same size.
@@ -34,19 +40,25 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
             throw new IllegalArgumentException("maps differ in size: " + distance.length + " vs " + reference.length);
         }
         int h = distance.length / widthPx;
-        float[] rel = new float[distance.length];
-        int n = 0;
+        float[] rel = new float[distance.length], far = new float[distance.length];
+        int n = 0, nFar = 0;
         long mismatch = 0;
         for (int i = 0; i < distance.length; i++) {
             boolean a = Float.isFinite(distance[i]), b = Float.isFinite(reference[i]);
             if (a && b) {
-                rel[n++] = (float) (Math.abs((double) distance[i] - reference[i]) / Math.max(reference[i], 1e-9));
+                rel[n] = (float) (Math.abs((double) distance[i] - reference[i]) / Math.max(reference[i], 1e-9));
+                if (reference[i] > FAR_METRES) {
+                    far[nFar++] = rel[n];
+                }
+                n++;
             } else if (a != b) {
                 mismatch++;
             }
         }
         float[] sorted = Arrays.copyOf(rel, n);
         Arrays.sort(sorted);
+        float[] farSorted = Arrays.copyOf(far, nFar);
+        Arrays.sort(farSorted);
         long over = 0;
         for (float v : sorted) {
             if (v > 0.05f) {
@@ -65,7 +77,7 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
         }
         return new DistanceComparison(n, quantile(sorted, 0.5), quantile(sorted, 0.95), quantile(sorted, 0.99),
                 n == 0 ? Double.NaN : sorted[n - 1], n == 0 ? Double.NaN : over / (double) n, mismatch,
-                sumAbs / (double) widthPx, maxAbs, off / (double) widthPx);
+                sumAbs / (double) widthPx, maxAbs, off / (double) widthPx, quantile(farSorted, 0.5), quantile(farSorted, 0.99));
     }
 
     /** The topmost terrain row of a column, or the height (one past the last row) for an all-sky column. */

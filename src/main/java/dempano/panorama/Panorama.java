@@ -122,4 +122,13 @@ public final class Panorama {
         }
         return java.nio.FloatBuffer.wrap(l).asReadOnlyBuffer();
     }
+
+    /**
+     * The summits of a list within this panorama's range: where each falls (azimuth, elevation
+     * angle, pixel), how far it is, and whether it is seen
+     * ({@link dempano.summits.SummitProjector} documents the tolerance).
+     */
+    public java.util.List<dempano.summits.SummitSighting> summits(dempano.summits.SummitList list) {
+        return dempano.summits.SummitProjector.project(this, list);
+    }
 }

@@ -22,7 +22,7 @@ public final class Stitcher {
         for (int i = 0; i < z.length; i++) {
             float d = c.depth()[i];
             switch (mode) {
-                case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(d, nearMetres, farMetres);
+                case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres);
                 case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
                 case SHADER_RANGE -> {
                     if (!(d > 0) || Float.isInfinite(d)) {

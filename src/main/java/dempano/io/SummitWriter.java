@@ -1,0 +1,165 @@
+package dempano.io;
+
+import com.google.gson.GsonBuilder;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import dempano.panorama.Panorama;
+import dempano.summits.SummitSighting;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.AffineTransform;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageIO;
+
+/** Writes summit sightings: {@code P-summits.json}, {@code P-summits.csv} and the labelled {@code P-labels.png}. */
+public final class SummitWriter {
+    private SummitWriter() {
+    }
+
+    /** Writes the three files for prefix P; returns their paths. */
+    public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix) throws IOException {
+        Path json = Path.of(prefix + "-summits.json"), csv = Path.of(prefix + "-summits.csv"), png = Path.of(prefix + "-labels.png");
+        String jsonText = json(sightings);
+        AtomicFiles.write(json, out -> out.write(jsonText.getBytes(StandardCharsets.UTF_8)));
+        String csvText = csv(sightings);
+        AtomicFiles.write(csv, out -> out.write(csvText.getBytes(StandardCharsets.UTF_8)));
+        BufferedImage labelled = labels(p, sightings);
+        AtomicFiles.write(png, out -> ImageIO.write(labelled, "png", out));
+        return List.of(json, csv, png);
+    }
+
+    static String json(List<SummitSighting> sightings) {
+        JsonArray a = new JsonArray();
+        for (SummitSighting s : sightings) {
+            JsonObject o = new JsonObject();
+            o.addProperty("name", s.summit().name());
+            o.addProperty("lat", s.summit().latDeg());
+            o.addProperty("lon", s.summit().lonDeg());
+            o.addProperty("elevationMetres", s.summit().elevationMetres());
+            o.addProperty("azimuthDeg", s.azimuthDeg());
+            o.addProperty("elevationAngleDeg", s.elevationAngleDeg());
+            o.addProperty("pixelX", s.pixelX());
+            o.addProperty("pixelY", s.pixelY());
+            o.addProperty("slantMetres", s.slantMetres());
+            o.addProperty("groundMetres", s.groundMetres());
+            number(o, "mapDistanceMetres", s.mapDistanceMetres());
+            number(o, "seenDistanceMetres", s.seenDistanceMetres());
+            o.addProperty("visible", s.visible());
+            a.add(o);
+        }
+        JsonObject root = new JsonObject();
+        root.addProperty("note", "mapDistanceMetres: distance-map value at the summit's pixel (null: sky or outside);"
+                + " seenDistanceMetres: terrain seen at the summit within the tolerance window (null: none)");
+        root.add("summits", a);
+        return new GsonBuilder().setPrettyPrinting().create().toJson(root) + "\n";
+    }
+
+    private static void number(JsonObject o, String key, double v) {
+        if (Double.isFinite(v)) {
+            o.addProperty(key, v);
+        } else {
+            o.add(key, com.google.gson.JsonNull.INSTANCE); // JSON has no NaN or infinity
+        }
+    }
+
+    static String csv(List<SummitSighting> sightings) {
+        StringBuilder b = new StringBuilder("name,lat,lon,elevation_m,azimuth_deg,elevation_angle_deg,pixel_x,pixel_y,"
+                + "slant_m,ground_m,map_distance_m,seen_distance_m,visible\n");
+        for (SummitSighting s : sightings) {
+            String name = s.summit().name();
+            if (name.contains(",") || name.contains("\"")) {
+                name = "\"" + name.replace("\"", "\"\"") + "\"";
+            }
+            b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s%n", name,
+                    s.summit().latDeg(), s.summit().lonDeg(), s.summit().elevationMetres(), s.azimuthDeg(),
+                    s.elevationAngleDeg(), s.pixelX(), s.pixelY(), s.slantMetres(), s.groundMetres(),
+                    csvNumber(s.mapDistanceMetres()), csvNumber(s.seenDistanceMetres()), s.visible()));
+        }
+        return b.toString();
+    }
+
+    private static String csvNumber(double v) {
+        return Double.isNaN(v) ? "" : Double.isInfinite(v) ? "inf" : String.format(Locale.ROOT, "%.1f", v);
+    }
+
+    /**
+     * The panorama with a band above it for labels: visible summits, highest first, each with its
+     * own slot of one text line's width (so labels never overlap; a summit too close to a higher
+     * one's slot is left unlabelled), a vertical label "NAME 2927 m · 12.3 km" and a leader line
+     * from the label down to the summit's pixel.
+     */
+    public static BufferedImage labels(Panorama p, List<SummitSighting> sightings) {
+        int w = p.widthPx(), h = p.heightPx();
+        Font font = new Font(Font.SANS_SERIF, Font.PLAIN, 13);
+        BufferedImage probe = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB);
+        FontMetrics fm = probe.createGraphics().getFontMetrics(font);
+        int slot = fm.getHeight() + 3;
+        List<SummitSighting> chosen = new ArrayList<>();
+        List<SummitSighting> candidates = new ArrayList<>();
+        for (SummitSighting s : sightings) {
+            if (s.visible() && s.pixelY() >= 0 && s.pixelY() < h) {
+                candidates.add(s);
+            }
+        }
+        candidates.sort(Comparator.comparingDouble((SummitSighting s) -> -s.summit().elevationMetres()));
+        for (SummitSighting s : candidates) {
+            boolean free = true;
+            for (SummitSighting c : chosen) {
+                double dx = Math.abs(c.pixelX() - s.pixelX());
+                if (Math.min(dx, w - dx) < slot) {
+                    free = false;
+                    break;
+                }
+            }
+            if (free) {
+                chosen.add(s);
+            }
+        }
+        int longest = 0;
+        for (SummitSighting s : chosen) {
+            longest = Math.max(longest, fm.stringWidth(text(s)));
+        }
+        int band = longest + 16;
+        BufferedImage img = new BufferedImage(w, h + band, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, w, band);
+        g.drawImage(p.image(), 0, band, null);
+        g.setFont(font);
+        for (SummitSighting s : chosen) {
+            int x = (int) Math.floor(s.pixelX());
+            int y = band + (int) Math.floor(s.pixelY());
+            g.setColor(new Color(40, 40, 40, 200));
+            g.setStroke(new BasicStroke(1f));
+            g.drawLine(x, band - 4, x, y - 3);
+            g.setColor(new Color(200, 30, 30));
+            g.fillOval(x - 2, y - 2, 5, 5);
+            AffineTransform saved = g.getTransform();
+            g.translate(x + fm.getAscent() / 2 - 1, band - 6);
+            g.rotate(-Math.PI / 2);
+            g.setColor(Color.BLACK);
+            g.drawString(text(s), 0, 0);
+            g.setTransform(saved);
+        }
+        g.dispose();
+        return img;
+    }
+
+    static String text(SummitSighting s) {
+        return String.format(Locale.ROOT, "%s %.0f m · %.1f km", s.summit().name(), s.summit().elevationMetres(),
+                s.slantMetres() / 1000);
+    }
+}

@@ -1,0 +1,101 @@
+package dempano.summits;
+
+import dempano.geo.Ellipsoid;
+import dempano.geo.Geodesy;
+import dempano.geo.LocalFrame;
+import dempano.geo.Refraction;
+import dempano.panorama.Panorama;
+import dempano.panorama.PanoramaGeometry;
+import dempano.panorama.PanoramaMetadata;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Projects surveyed summits into a rendered panorama with the renderer's own geometry (WGS84 ENU
+ * from the eye, refraction lift k·d²/2R) and decides which are seen.
+ *
+ * <p>Visibility tolerance. A survey and a DEM disagree: SRTM3 flattens summits (tens of metres
+ * lower; where a void on the summit was filled by interpolation, up to ~200 m lower), and surveyed
+ * positions are off by up to a cell or two. So around the summit's pixel a window is searched:
+ * ±{@link #POSITION_TOLERANCE_METRES} sideways, {@link #HEIGHT_TOLERANCE_UP_METRES} up and
+ * {@link #HEIGHT_TOLERANCE_DOWN_METRES} down, converted to pixels at the summit's distance (at
+ * least one pixel each way). In each column of the window the first terrain pixel at or below the
+ * window's top is what a person sees at the summit; the summit is visible when, in some column,
+ * that terrain lies within max({@link #DISTANCE_TOLERANCE_METRES}, {@link #DISTANCE_TOLERANCE_FRACTION}
+ * × distance) of the summit's slant distance. A summit hidden behind nearer terrain shows that
+ * terrain instead, at a shorter distance; summits beyond the panorama's range or outside its
+ * elevation range are not visible.
+ */
+public final class SummitProjector {
+    public static final double POSITION_TOLERANCE_METRES = 150;
+    public static final double HEIGHT_TOLERANCE_UP_METRES = 30;
+    public static final double HEIGHT_TOLERANCE_DOWN_METRES = 200;
+    public static final double DISTANCE_TOLERANCE_METRES = 300;
+    public static final double DISTANCE_TOLERANCE_FRACTION = 0.02;
+
+    private SummitProjector() {
+    }
+
+    /** Every summit of the list within the panorama's range, in list order. */
+    public static List<SummitSighting> project(Panorama p, SummitList list) {
+        PanoramaMetadata m = p.metadata();
+        LocalFrame eye = new LocalFrame(m.latDeg(), m.lonDeg(), m.eyeAltitudeMetres());
+        Refraction refraction = new Refraction(m.refractionCoefficient());
+        double[] eyeFoot = new double[3];
+        Ellipsoid.toEcef(m.latDeg(), m.lonDeg(), 0, eyeFoot);
+        PanoramaGeometry g = p.geometry();
+        float[] distance = p.distanceArray();
+        List<SummitSighting> out = new ArrayList<>();
+        double[] foot = new double[3], enu = new double[3];
+        for (Summit s : list.summits()) {
+            if (Double.isNaN(s.elevationMetres())) {
+                continue; // no height: cannot be placed in elevation
+            }
+            Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
+            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
+            if (chordGround > m.rangeMetres() * 1.01 + 1000) {
+                continue;
+            }
+            eye.toEnu(s.latDeg(), s.lonDeg(), s.elevationMetres() + refraction.liftMetres(chordGround), enu);
+            double horizontal = Math.hypot(enu[0], enu[1]);
+            if (horizontal > m.rangeMetres() || horizontal < 1) {
+                continue; // beyond the range, or the eye stands on it
+            }
+            double az = Math.toDegrees(Math.atan2(enu[0], enu[1]));
+            if (az < 0) {
+                az += 360;
+            }
+            double el = Math.toDegrees(Math.atan2(enu[2], horizontal));
+            double slant = Math.sqrt(horizontal * horizontal + enu[2] * enu[2]);
+            double x = g.columnOf(az), y = g.rowOf(el);
+            int col = Math.floorMod((int) Math.floor(x), g.widthPx()), row = (int) Math.floor(y);
+            boolean inside = row >= 0 && row < g.heightPx();
+            double atPixel = inside ? distance[row * g.widthPx() + col] : Double.NaN;
+            double ppd = g.pixelsPerDegree();
+            int dc = (int) Math.ceil(Math.toDegrees(Math.atan(POSITION_TOLERANCE_METRES / horizontal)) * ppd);
+            int up = Math.max(1, (int) Math.ceil(Math.toDegrees(Math.atan(HEIGHT_TOLERANCE_UP_METRES / horizontal)) * ppd));
+            int down = Math.max(1, (int) Math.ceil(Math.toDegrees(Math.atan(HEIGHT_TOLERANCE_DOWN_METRES / horizontal)) * ppd));
+            dc = Math.max(1, dc);
+            double tolerance = Math.max(DISTANCE_TOLERANCE_METRES, DISTANCE_TOLERANCE_FRACTION * slant);
+            double seen = Double.NaN;
+            if (inside) {
+                for (int c = -dc; c <= dc; c++) {
+                    int cc = Math.floorMod(col + c, g.widthPx());
+                    for (int r = Math.max(0, row - up); r <= Math.min(g.heightPx() - 1, row + down); r++) {
+                        float d = distance[r * g.widthPx() + cc];
+                        if (Float.isFinite(d)) {
+                            if (Double.isNaN(seen) || Math.abs(d - slant) < Math.abs(seen - slant)) {
+                                seen = d;
+                            }
+                            break; // the first terrain pixel of this column
+                        }
+                    }
+                }
+            }
+            boolean visible = !Double.isNaN(seen) && Math.abs(seen - slant) <= tolerance;
+            double ground = Geodesy.distanceMetres(m.latDeg(), m.lonDeg(), s.latDeg(), s.lonDeg());
+            out.add(new SummitSighting(s, az, el, x, y, slant, ground, atPixel, seen, visible));
+        }
+        return out;
+    }
+}
