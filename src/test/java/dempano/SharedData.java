@@ -27,4 +27,11 @@ public final class SharedData {
         Assumptions.assumeTrue(Files.isRegularFile(p), p.toAbsolutePath() + " not found; test skipped");
         return p;
     }
+
+    /** A file under ../shared (e.g. "peaks/alps.txt"), or a skipped test saying why. */
+    public static Path require(String relative) {
+        Path p = root().resolve(relative);
+        Assumptions.assumeTrue(Files.isRegularFile(p), p.toAbsolutePath() + " not found (set DEMPANO_SHARED); test skipped");
+        return p;
+    }
 }
