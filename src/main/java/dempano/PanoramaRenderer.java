@@ -111,11 +111,12 @@ public final class PanoramaRenderer implements AutoCloseable {
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
+        double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
         progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                 + " (" + terrain.triangles() / 1_000_000.0 + " M triangles)");
         ViewCapture[] captures;
         try {
-            captures = gl.render(terrain.root(), layout, req.depthMode(), req.nearMetres(), far, true);
+            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true);
         } finally {
             TerrainBuilder.destroyBuffers(terrain.root());
         }
@@ -124,14 +125,14 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("stitching");
         double[][] eyeDepth = new double[captures.length][];
         for (int k = 0; k < captures.length; k++) {
-            eyeDepth[k] = Stitcher.eyeDepths(captures[k], layout, req.depthMode(), req.nearMetres(), far);
+            eyeDepth[k] = Stitcher.eyeDepths(captures[k], layout, req.depthMode(), near, far);
         }
         int[] argb = new int[geometry.widthPx() * geometry.heightPx()];
         float[] distance = new float[argb.length];
         Stitcher.stitch(geometry, layout, captures, eyeDepth, argb, distance);
         t = lap(timings, "stitch", t);
         return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
-                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY);
+                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near);
     }
 
     private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, Map<String, Double> timings,
@@ -143,12 +144,12 @@ public final class PanoramaRenderer implements AutoCloseable {
                 geometry, true);
         t = lap(timings, "render", t);
         return finish(req, mosaic, eye, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
-                req.views(), 0, 0, Double.POSITIVE_INFINITY);
+                req.views(), 0, 0, Double.POSITIVE_INFINITY, 0);
     }
 
     private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, PanoramaGeometry geometry, int[] argb,
                             float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
-                            int views, int viewWidth, int viewHeight, double far) {
+                            int views, int viewWidth, int viewHeight, double far, double near) {
         if (req.elevationRange().auto()) {
             PanoramaGeometry cropped = AutoCrop.crop(geometry, distance);
             int skip = (int) Math.round((geometry.topElevationDeg() - cropped.topElevationDeg()) * geometry.pixelsPerDegree());
@@ -169,9 +170,40 @@ public final class PanoramaRenderer implements AutoCloseable {
         mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
         PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
-                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), req.nearMetres(), far, views,
+                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), near, far, views,
                 viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer());
         return new Panorama(geometry, argb, distance, layers, meta);
+    }
+
+    /**
+     * The requested near plane, lowered where terrain comes closer to the eye than it (an eye low
+     * over a steep slope): otherwise the near plane would cut a hole through which far terrain or
+     * sky shows. The terrain's distance is bounded below by the eye's height above the DEM times the
+     * cosine of the steepest slope in the cells around the eye; a point at that distance has an eye
+     * depth of at least that times the cosine of the views' largest off-axis angle.
+     */
+    static double safeNearMetres(double requested, Mosaic mosaic, Viewpoint eye, ViewLayout layout) {
+        double clearance = eye.eyeAltitudeMetres() - eye.groundElevationMetres();
+        double r = mosaic.rowOf(eye.latDeg()), c = mosaic.colOf(eye.lonDeg());
+        double dy = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        double dx = dy * Math.cos(Math.toRadians(eye.latDeg()));
+        double maxGradient = 0;
+        for (int i = (int) Math.floor(r) - 1; i <= (int) Math.floor(r) + 2; i++) {
+            for (int j = (int) Math.floor(c) - 1; j <= (int) Math.floor(c) + 2; j++) {
+                if (i < 0 || j < 0 || i + 1 >= mosaic.rows() || j + 1 >= mosaic.cols()) {
+                    continue;
+                }
+                float h = mosaic.sample(i, j), hs = mosaic.sample(i + 1, j), he = mosaic.sample(i, j + 1);
+                if (!Float.isNaN(h) && !Float.isNaN(hs) && !Float.isNaN(he)) {
+                    maxGradient = Math.max(maxGradient, Math.hypot((he - h) / dx, (hs - h) / dy));
+                }
+            }
+        }
+        double cosSlope = 1 / Math.sqrt(1 + maxGradient * maxGradient);
+        double tanV = Math.max(Math.abs(layout.topTan()), Math.abs(layout.bottomTan())), tanH = layout.halfWidthTan();
+        double cosOffAxis = 1 / Math.sqrt(1 + tanH * tanH + tanV * tanV);
+        double bound = 0.9 * Math.max(0, clearance) * cosSlope * cosOffAxis;
+        return Math.max(0.01, Math.min(requested, bound));
     }
 
     private static long lap(Map<String, Double> timings, String stage, long since) {

@@ -33,6 +33,36 @@ public final class Synthetic {
         return new InMemoryDem("synthetic", tiles);
     }
 
+    /**
+     * Tiles at the given south-west corners ({lat, lon} pairs, lon in −180…179), n samples a side,
+     * sampled from f(lat, lon) with lon in the tile's own range.
+     */
+    public static InMemoryDem tiles(DoubleBinaryOperator f, int n, int[]... corners) {
+        List<HgtTile> tiles = new ArrayList<>();
+        for (int[] sw : corners) {
+            float[] h = new float[n * n];
+            for (int r = 0; r < n; r++) {
+                for (int c = 0; c < n; c++) {
+                    h[r * n + c] = (float) f.applyAsDouble(sw[0] + 1 - r / (n - 1.0), sw[1] + c / (n - 1.0));
+                }
+            }
+            tiles.add(HgtTile.of(TileId.of(sw[0], sw[1]), n, h, "synthetic"));
+        }
+        return new InMemoryDem("synthetic", tiles);
+    }
+
+    /** All tiles of a block of rows × cols from (latS, lonW), wrapping longitude at ±180. */
+    public static int[][] block(int latS, int lonW, int rows, int cols) {
+        int[][] out = new int[rows * cols][];
+        for (int i = 0; i < rows; i++) {
+            for (int j = 0; j < cols; j++) {
+                int lon = lonW + j;
+                out[i * cols + j] = new int[] {latS + i, lon >= 180 ? lon - 360 : lon};
+            }
+        }
+        return out;
+    }
+
     /** March a ray in double precision through the analytic terrain (5 m steps), then bisect; +∞ if none within max. */
     public static double rayMarch(LocalFrame eye, DoubleBinaryOperator terrain, double azDeg, double elDeg, double max) {
         double az = Math.toRadians(azDeg), el = Math.toRadians(elDeg);

@@ -27,7 +27,17 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
             throw new IllegalArgumentException("bad viewpoint altitude: standing " + standingAltitudeMetres
                     + " m, eye height " + eyeHeightMetres + " m");
         }
+        // An eye inside the terrain would see the landscape through the back of the surface: refuse.
+        if (standingAltitudeMetres + eyeHeightMetres < groundElevationMetres - BELOW_GROUND_TOLERANCE_METRES) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "the eye (%.1f m) would be %.1f m below the DEM surface (%.1f m) at %.6f, %.6f: raise the offset"
+                            + " or the altitude", standingAltitudeMetres + eyeHeightMetres,
+                    groundElevationMetres - standingAltitudeMetres - eyeHeightMetres, groundElevationMetres, latDeg, lonDeg));
+        }
     }
+
+    /** How far below the DEM's bilinear surface an eye may be (the drawn triangles differ from it by centimetres). */
+    public static final double BELOW_GROUND_TOLERANCE_METRES = 0.5;
 
     /** Standing on the DEM at the coordinate, corrected by {@code offsetMetres}. */
     public static Viewpoint onDem(Mosaic mosaic, double latDeg, double lonDeg, double offsetMetres,
