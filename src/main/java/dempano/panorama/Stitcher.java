@@ -103,7 +103,13 @@ public final class Stitcher {
         double[][] w = new double[4][4]; // [dy + 1][dx + 1] of 1/z for dy, dx in -1..2
         for (int dy = -1; dy <= 2; dy++) {
             for (int dx = -1; dx <= 2; dx++) {
-                w[dy + 1][dx + 1] = 1 / z[clampY(l, y0 + dy) * l.widthPx() + clampX(l, x0 + dx)];
+                int x = x0 + dx, y = y0 + dy;
+                boolean outer = dx == -1 || dx == 2 || dy == -1 || dy == 2;
+                if (outer && (x < 0 || y < 0 || x >= l.widthPx() || y >= l.heightPx())) {
+                    w[dy + 1][dx + 1] = Double.NaN; // beyond the view's edge: that triple is not tested
+                } else {
+                    w[dy + 1][dx + 1] = 1 / z[clampY(l, y) * l.widthPx() + clampX(l, x)];
+                }
             }
         }
         double lo = Double.POSITIVE_INFINITY, hi = 0, invSum = 0, nearestW = -1, nearestZ = Double.POSITIVE_INFINITY;
@@ -140,6 +146,10 @@ public final class Stitcher {
     }
 
     private static boolean linear3(double a, double b, double c) {
+        if (Double.isNaN(a) || Double.isNaN(c)) {
+            // At a view's edge: the other triple through the same central pair still sees any jump.
+            return true;
+        }
         if (a == 0 || b == 0 || c == 0) {
             return false; // sky (1/∞) in the neighbourhood
         }

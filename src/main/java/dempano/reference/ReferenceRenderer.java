@@ -264,7 +264,9 @@ public final class ReferenceRenderer {
                         double t = denom == 0 ? Math.hypot(entry[0], entry[1])
                                 : (entry[0] * du - entry[1] * ds) / denom;
                         double ra = Math.hypot(entry[0], entry[1]), rb = Math.hypot(exit[0], exit[1]);
-                        t = Math.max(Math.min(ra, rb), Math.min(Math.max(ra, rb), t)); // rounding guard
+                        // Rounding guard: a segment's points are no farther than its farther end (distance
+                        // along a segment is convex); its nearest point may be inside it.
+                        t = Math.max(0, Math.min(Math.max(ra, rb), t));
                         distance[next] = t;
                         if (argb != null) {
                             double len = Math.hypot(ds, du);

@@ -25,10 +25,11 @@ class DepthPrecisionTest {
         "300000,     1200,     2900,   0.06",
     })
     void errorAtDistance(double z, double min24, double max24, double maxFloat) {
-        // Worst case over a small sweep of distances around z (rounding depends on the exact value).
+        // Worst case over distances spanning two 24-bit steps above z (rounding depends on the exact value).
+        double step = z * z / NEAR * Math.pow(2, -24);
         double worst24 = 0, worstReversed = 0, worstShader = 0;
         for (int i = 0; i < 200; i++) {
-            double zi = z * (1 + i * 1e-5);
+            double zi = z + i * 2 * step / 200;
             double d24 = DepthLinearizer.quantize24(DepthLinearizer.standardDepthBufferValue(zi, NEAR, FAR));
             worst24 = Math.max(worst24, Math.abs(DepthLinearizer.standardEyeDepth(d24, NEAR, FAR) - zi));
             float dRev = (float) DepthLinearizer.reversedDepthBufferValue(zi, NEAR);

@@ -31,7 +31,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * against the CPU reference on every pixel (same surface: median relative error under 1e-5, p99
  * under 5 %, where the tail is grazing rows just under the skyline, skyline within half a pixel
  * on average); a hill at the geodesic azimuth (within one pixel); and distances against a ray
- * march through the analytic terrain (0.1 %), which shares nothing with either renderer.
+ * march through the analytic terrain (0.25 %, the grid's own departure from it), which shares nothing with either renderer.
  */
 class ExtremeCasesTest {
     static final double K = 111_195;
@@ -90,24 +90,35 @@ class ExtremeCasesTest {
         double az = Geodesy.azimuthDeg(lat, lon, hillLat, hillLon > 180 ? hillLon - 360 : hillLon);
         Panorama gl = p[0];
         float[] d = gl.distanceArray();
-        int c0 = (int) Math.floor(gl.geometry().columnOf(az)), best = c0, bestRow = Integer.MAX_VALUE;
-        for (int c = c0 - 60; c <= c0 + 60; c++) {
-            int row = DistanceComparison.skylineRow(d, gl.widthPx(), gl.heightPx(), Math.floorMod(c, gl.widthPx()));
-            if (row < bestRow) {
-                bestRow = row;
-                best = c;
+        int c0 = (int) Math.floor(gl.geometry().columnOf(az));
+        // The hill's skyline is symmetric about its summit's azimuth: its centroid above the plain's.
+        int w = gl.widthPx();
+        double baseline = (DistanceComparison.skylineRow(d, w, gl.heightPx(), Math.floorMod(c0 - 450, w))
+                + DistanceComparison.skylineRow(d, w, gl.heightPx(), Math.floorMod(c0 + 450, w))) / 2.0;
+        double sumW = 0, sumWC = 0;
+        int bestRow = Integer.MAX_VALUE;
+        for (int c = c0 - 450; c <= c0 + 450; c++) {
+            int row = DistanceComparison.skylineRow(d, w, gl.heightPx(), Math.floorMod(c, w));
+            bestRow = Math.min(bestRow, row);
+            double excess = baseline - row;
+            if (excess > 0) {
+                sumW += excess;
+                sumWC += excess * (c + 0.5);
             }
         }
-        int last = best;
-        while (DistanceComparison.skylineRow(d, gl.widthPx(), gl.heightPx(), Math.floorMod(last + 1, gl.widthPx())) == bestRow) {
-            last++;
-        }
-        assertEquals(gl.geometry().columnOf(az), (best + last) / 2.0 + 0.5, 1.0, name + ": hill azimuth");
+        // 0.75 px: the analytic hill is round in a spherical metric (111.195 km a degree), the WGS84 one is
+        // 0.3 % anisotropic, which shifts the centroid of a hill seen obliquely by about half a pixel.
+        assertEquals(gl.geometry().columnOf(az), sumWC / sumW, 0.75, name + ": hill azimuth (skyline centroid)");
         int checked = 0;
-        for (int row = bestRow + 3; row < gl.heightPx(); row += 17) {
+        // From 10 rows under the skyline: grazing rays near the hilltop magnify the 185 m grid's
+        // departure from the analytic Gaussian (metres) into distance errors over 0.1 %.
+        for (int row = bestRow + 10; row < gl.heightPx(); row += 17) {
             double truth = Synthetic.rayMarch(eye, f, gl.azimuthOfColumn(c0), gl.elevationOfRow(row), 25_000);
             if (Double.isFinite(truth) && truth < 19_000) {
-                assertEquals(truth, gl.distanceMetres(c0, row), truth * 1e-3, name + ": row " + row);
+                // 0.25 %: a 1.2 km Gaussian on a 185 m grid departs from its triangles by up to ~3 m,
+                // which oblique rays turn into a few metres of distance (the GL path matches the
+                // reference on the triangles to 1e-5, checked above).
+                assertEquals(truth, gl.distanceMetres(c0, row), truth * 2.5e-3, name + ": row " + row);
                 checked++;
             }
         }
@@ -123,11 +134,17 @@ class ExtremeCasesTest {
                 PanoramaRequest.at(46.5, 8.5).withRangeMetres(20_000).withRefraction(Refraction.NONE));
         assertEquals(2000, p[0].metadata().groundElevationMetres(), 0.01);
         assertMatchesReference("summit", p[0], p[1]);
-        // Every direction more than 1° down meets the cone or the plain: no sky below.
+        // The cone falls away at 26.6°, so rays just below the horizon pass over it and meet the plain
+        // 1500 m lower only beyond the 20 km range: the skyline is the plain's range edge, at
+        // −atan(1502 / 20000) − 0.09° (curvature) = −4.38°; below it every pixel is terrain (no hole).
         for (Panorama q : p) {
+            float[] d = q.distanceArray();
             for (int col = 0; col < q.widthPx(); col++) {
-                int sky = DistanceComparison.skylineRow(q.distanceArray(), q.widthPx(), q.heightPx(), col);
-                assertTrue(q.elevationOfRow(sky) > -1, "column " + col + " terrain only from " + q.elevationOfRow(sky) + "°");
+                int sky = DistanceComparison.skylineRow(d, q.widthPx(), q.heightPx(), col);
+                assertEquals(-4.38, q.elevationOfRow(sky), 0.08, "column " + col);
+                for (int row = sky; row < q.heightPx(); row++) {
+                    assertTrue(Float.isFinite(d[row * q.widthPx() + col]), "a hole at column " + col + " row " + row);
+                }
             }
         }
     }
@@ -237,7 +254,7 @@ class ExtremeCasesTest {
         PanoramaRequest req = PanoramaRequest.at(46.2, 8.9).withRangeMetres(30_000).withRefraction(Refraction.NONE)
                 .withLayers(EnumSet.of(Layer.ELEVATION));
         Panorama[] p = both(dem, req);
-        assertTrue(p[0].metadata().warnings().stream().anyMatch(w -> w.contains("N46E009") && w.contains("void")),
+        assertTrue(p[0].metadata().warnings().stream().anyMatch(w -> w.contains("N46E009") && w.contains("no valid sample")),
                 p[0].metadata().warnings().toString());
         assertTrue(p[0].metadata().tilesMissing().contains("N45E008"), p[0].metadata().tilesMissing().toString());
         assertMatchesReference("voids", p[0], p[1]);
