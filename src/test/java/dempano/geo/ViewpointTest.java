@@ -27,10 +27,15 @@ class ViewpointTest {
 
     @Test
     void altitudeFromDemPlusOffsetPlusEyeHeight() {
-        Viewpoint v = Viewpoint.onDem(plane(), 46.5, 8.5, -30, 1.7);
+        Viewpoint v = Viewpoint.onDem(plane(), 46.5, 8.5, 30, 1.7);
         assertEquals(1600, v.groundElevationMetres(), 1e-9);
-        assertEquals(1570, v.standingAltitudeMetres(), 1e-9);
-        assertEquals(1571.7, v.eyeAltitudeMetres(), 1e-9);
+        assertEquals(1630, v.standingAltitudeMetres(), 1e-9);
+        assertEquals(1631.7, v.eyeAltitudeMetres(), 1e-9);
+        // A negative offset lowers the eye, down to the surface (0.5 m of tolerance) and no further.
+        assertEquals(1599.7, Viewpoint.onDem(plane(), 46.5, 8.5, -2, 1.7).eyeAltitudeMetres(), 1e-9);
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> Viewpoint.onDem(plane(), 46.5, 8.5, -30, 1.7));
+        assertTrue(e.getMessage().contains("28.3 m below the DEM surface"), e.getMessage());
     }
 
     @Test
