@@ -85,10 +85,10 @@ public final class AccuracyReport {
         Files.createDirectories(out);
         List<Row> rows = new ArrayList<>();
         Map<Scene, Double> referenceSeconds = new LinkedHashMap<>();
-        String glName;
-        try (PanoramaRenderer gl = PanoramaRenderer.open(scenes.get(0).dem())) {
-            glName = gl.glRenderer();
-        }
+        // Held open for the whole report: the shared GL context is then created once (re-creating it
+        // after the last holder closed failed once on llvmpipe: see the issue notes).
+        PanoramaRenderer keepAlive = PanoramaRenderer.open(scenes.get(0).dem());
+        String glName = keepAlive.glRenderer();
         for (Scene scene : scenes) {
             PanoramaRequest base = PanoramaRequest.at(scene.latDeg(), scene.lonDeg()).withRangeMetres(scene.rangeMetres());
             Panorama ref;
@@ -123,6 +123,7 @@ public final class AccuracyReport {
         Files.writeString(out.resolve("accuracy.md"), markdown(scenes, rows, referenceSeconds, glName) + summitSection,
                 StandardCharsets.UTF_8);
         plot(scenes, rows, out.resolve("accuracy.png"));
+        keepAlive.close();
         System.err.println("accuracyReport: wrote " + out.resolve("accuracy.md") + " and " + out.resolve("accuracy.png"));
     }
 
