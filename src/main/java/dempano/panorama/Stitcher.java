@@ -50,13 +50,14 @@ public final class Stitcher {
         int width = g.widthPx();
         IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
             double el = g.elevationOfRow(row);
+            double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
             for (int col = 0; col < width; col++) {
                 double az = g.azimuthOfColumn(col);
                 int view = layout.viewOf(az);
                 double[] p = layout.project(view, az, el);
                 int i = row * width + col;
                 argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
-                rangeOut[i] = (float) range(eyeDepth[view], layout, p);
+                rangeOut[i] = (float) range(eyeDepth[view], layout, p, scratch);
             }
         });
     }
@@ -96,11 +97,13 @@ public final class Stitcher {
      * grazing incidence where neighbours differ by tens of per cent. Otherwise samples within
      * {@link #SAME_SURFACE_RATIO} of each other are interpolated the same way (a smooth surface), and
      * anything else (a silhouette) takes the nearest sample: a distance really seen, never a blend.
+     *
+     * @param w a 4×4 scratch buffer, overwritten
      */
-    static double range(double[] z, ViewLayout l, double[] p) {
+    static double range(double[] z, ViewLayout l, double[] p, double[][] w) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         double fx = p[0] - x0, fy = p[1] - y0;
-        double[][] w = new double[4][4]; // [dy + 1][dx + 1] of 1/z for dy, dx in -1..2
+        // w: [dy + 1][dx + 1] of 1/z for dy, dx in -1..2 (a 4×4 buffer the caller reuses)
         for (int dy = -1; dy <= 2; dy++) {
             for (int dx = -1; dx <= 2; dx++) {
                 int x = x0 + dx, y = y0 + dy;
