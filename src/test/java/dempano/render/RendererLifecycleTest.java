@@ -78,4 +78,19 @@ class RendererLifecycleTest {
             pool.shutdown();
         }
     }
+
+    @Test
+    void contextIsCreatedAgainAfterTheLastUserCloses() throws Exception {
+        float[] first = null;
+        for (int round = 0; round < 3; round++) {
+            try (PanoramaRenderer r = PanoramaRenderer.open(RenderGeometryTest.dem(RenderGeometryTest.TERRAIN, 46, 8, 1, 1))) {
+                float[] d = r.render(small()).distanceArray();
+                if (first == null) {
+                    first = d;
+                } else {
+                    assertArrayEquals(first, d, "round " + round);
+                }
+            }
+        }
+    }
 }
