@@ -103,7 +103,11 @@ public final class PanoramaRenderer implements AutoCloseable {
         double sunAz = Math.toRadians(315), sunEl = Math.toRadians(40);
         material.setVector3("SunDirection", new Vector3f((float) (Math.cos(sunEl) * Math.sin(sunAz)), (float) Math.sin(sunEl),
                 (float) (-Math.cos(sunEl) * Math.cos(sunAz))));
-        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material);
+        if (!req.colour()) {
+            material.setBoolean("DistanceOnly", true);
+        }
+        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
+                req.pixelsPerDegree(), req.lodErrorPx());
         t = lap(timings, "mesh", t);
 
         ElevationRange er = req.elevationRange();
@@ -116,7 +120,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                 + " (" + terrain.triangles() / 1_000_000.0 + " M triangles)");
         ViewCapture[] captures;
         try {
-            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true);
+            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour());
         } finally {
             TerrainBuilder.destroyBuffers(terrain.root());
         }
@@ -127,12 +131,13 @@ public final class PanoramaRenderer implements AutoCloseable {
         for (int k = 0; k < captures.length; k++) {
             eyeDepth[k] = Stitcher.eyeDepths(captures[k], layout, req.depthMode(), near, far);
         }
-        int[] argb = new int[geometry.widthPx() * geometry.heightPx()];
-        float[] distance = new float[argb.length];
+        int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
+        float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
         Stitcher.stitch(geometry, layout, captures, eyeDepth, argb, distance);
         t = lap(timings, "stitch", t);
         return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
-                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near);
+                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,
+                req.lodErrorPx(), terrain.triangles());
     }
 
     private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, Map<String, Double> timings,
@@ -141,19 +146,20 @@ public final class PanoramaRenderer implements AutoCloseable {
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         progress.accept("sweeping " + geometry.widthPx() + " columns on the CPU");
         var result = dempano.reference.ReferenceRenderer.render(mosaic, eye, req.refraction(), req.rangeMetres(),
-                geometry, true);
+                geometry, req.colour());
         t = lap(timings, "render", t);
         return finish(req, mosaic, eye, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
-                req.views(), 0, 0, Double.POSITIVE_INFINITY, 0);
+                req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0);
     }
 
     private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, PanoramaGeometry geometry, int[] argb,
                             float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
-                            int views, int viewWidth, int viewHeight, double far, double near) {
+                            int views, int viewWidth, int viewHeight, double far, double near, double lodErrorPx,
+                            long triangles) {
         if (req.elevationRange().auto()) {
             PanoramaGeometry cropped = AutoCrop.crop(geometry, distance);
             int skip = (int) Math.round((geometry.topElevationDeg() - cropped.topElevationDeg()) * geometry.pixelsPerDegree());
-            argb = AutoCrop.rows(argb, geometry.widthPx(), skip, cropped.heightPx());
+            argb = argb == null ? null : AutoCrop.rows(argb, geometry.widthPx(), skip, cropped.heightPx());
             distance = AutoCrop.rows(distance, geometry.widthPx(), skip, cropped.heightPx());
             geometry = cropped;
             t = lap(timings, "crop", t);
@@ -171,7 +177,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
                 req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), near, far, views,
-                viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer());
+                viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer(), lodErrorPx, triangles);
         return new Panorama(geometry, argb, distance, layers, meta);
     }
 

@@ -30,12 +30,17 @@ import java.util.Set;
  * @param supersampling     view pixels per panorama pixel, linear (default 1)
  * @param views             perspective views (default 8)
  * @param missingTiles      what a missing tile means (default sea level)
+ * @param lodErrorPx        bound on the screen error of simplified distant terrain, panorama pixels
+ *                          (default {@link dempano.terrain.LevelOfDetail#DEFAULT_MAX_ERROR_PX}; 0 = full
+ *                          resolution everywhere). The GL path only: the reference is always exact.
+ * @param colour            compute the colour image (default true); false renders distances only,
+ *                          skipping colour shading, read-back and stitching
  */
 public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
                               double eyeHeightMetres, double rangeMetres, double pixelsPerDegree,
                               ElevationRange elevationRange, Refraction refraction, DepthMode depthMode,
                               Set<Layer> layers, double nearMetres, double supersampling, int views,
-                              MissingTilePolicy missingTiles) {
+                              MissingTilePolicy missingTiles, double lodErrorPx, boolean colour) {
     public static final double DEFAULT_RANGE_METRES = 100_000;
     public static final double DEFAULT_PIXELS_PER_DEGREE = 20;
     public static final double DEFAULT_NEAR_METRES = 1;
@@ -55,6 +60,9 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
             throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000
                     + " km, got " + rangeMetres / 1000 + " km");
         }
+        if (!(lodErrorPx >= 0 && lodErrorPx <= 100)) {
+            throw new IllegalArgumentException("level-of-detail error bound must be in [0, 100] pixels, got " + lodErrorPx);
+        }
         if (!(nearMetres > 0 && nearMetres < 1000)) {
             throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
         }
@@ -73,71 +81,83 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
                 DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
                 DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.SEA_LEVEL);
+                MissingTilePolicy.SEA_LEVEL, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true);
     }
 
     public PanoramaRequest withOffsetMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, v, altitudeMetres, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withAltitudeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, v, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withEyeHeightMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, v, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withRangeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, v, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withPixelsPerDegree(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres, v,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withElevationRange(ElevationRange v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withRefraction(Refraction v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles);
+                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withDepthMode(DepthMode v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles);
+                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withLayers(Set<Layer> v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles);
+                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withNearMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withSupersampling(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withViews(int v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour);
     }
 
     public PanoramaRequest withMissingTiles(MissingTilePolicy v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour);
+    }
+
+    public PanoramaRequest withLodErrorPx(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
+                missingTiles, v, colour);
+    }
+
+    public PanoramaRequest withColour(boolean v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
+                missingTiles, lodErrorPx, v);
     }
 }

@@ -76,6 +76,10 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--repeat", description = "Render this many times in one process and print a timing table (cold = run 1, warm = the rest); files are written once (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     int repeat;
+    @Option(names = "--lod-px", paramLabel = "PX", description = "Bound on the screen error of simplified distant terrain, panorama pixels; 0 = full resolution everywhere (default: ${DEFAULT-VALUE}).", defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)
+    double lodErrorPx;
+    @Option(names = "--no-colour", description = "Distances only: skip shading and the colour image (P.png, P-labels.png).")
+    boolean noColour;
     @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
     String missingTiles;
 
@@ -138,7 +142,8 @@ public final class Main implements Callable<Integer> {
                 .withEyeHeightMetres(eyeHeightMetres).withRangeMetres(range).withPixelsPerDegree(ppd)
                 .withElevationRange(ElevationRange.parse(elevationRange)).withRefraction(new Refraction(refraction))
                 .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
-                .withSupersampling(supersampling).withViews(views).withMissingTiles(policy);
+                .withSupersampling(supersampling).withViews(views).withMissingTiles(policy)
+                .withLodErrorPx(lodErrorPx).withColour(!noColour);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory

@@ -16,7 +16,7 @@ import java.util.Map;
 import javax.imageio.ImageIO;
 
 /**
- * Writes a panorama's files for a prefix P: {@code P.png}, {@code P-distance.npy} (or {@code .pfm}),
+ * Writes a panorama's files for a prefix P: {@code P.png} (when it has colour), {@code P-distance.npy} (or {@code .pfm}),
  * {@code P-distance.png}, {@code P-<layer>.npy} and {@code P.json}. Each file is written atomically.
  */
 public final class PanoramaWriter {
@@ -26,13 +26,15 @@ public final class PanoramaWriter {
     /** @return the files written */
     public static List<Path> write(Panorama p, String prefix, boolean pfm) throws IOException {
         List<Path> files = new ArrayList<>();
-        Path png = Path.of(prefix + ".png");
-        AtomicFiles.write(png, out -> {
-            if (!ImageIO.write(p.image(), "png", out)) {
-                throw new IOException("no PNG writer");
-            }
-        });
-        files.add(png);
+        if (p.hasColour()) {
+            Path png = Path.of(prefix + ".png");
+            AtomicFiles.write(png, out -> {
+                if (!ImageIO.write(p.image(), "png", out)) {
+                    throw new IOException("no PNG writer");
+                }
+            });
+            files.add(png);
+        }
         Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
         if (pfm) {
             FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());

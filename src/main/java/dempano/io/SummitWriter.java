@@ -27,13 +27,16 @@ public final class SummitWriter {
     private SummitWriter() {
     }
 
-    /** Writes the three files for prefix P; returns their paths. */
+    /** Writes the three files for prefix P (the labels only when the panorama has colour); returns their paths. */
     public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix) throws IOException {
         Path json = Path.of(prefix + "-summits.json"), csv = Path.of(prefix + "-summits.csv"), png = Path.of(prefix + "-labels.png");
         String jsonText = json(sightings);
         AtomicFiles.write(json, out -> out.write(jsonText.getBytes(StandardCharsets.UTF_8)));
         String csvText = csv(sightings);
         AtomicFiles.write(csv, out -> out.write(csvText.getBytes(StandardCharsets.UTF_8)));
+        if (!p.hasColour()) {
+            return List.of(json, csv);
+        }
         BufferedImage labelled = labels(p, sightings);
         AtomicFiles.write(png, out -> ImageIO.write(labelled, "png", out));
         return List.of(json, csv, png);

@@ -19,11 +19,12 @@ public final class Panorama {
     private final Map<Layer, float[]> layers;
     private final PanoramaMetadata metadata;
 
+    /** @param argb colour, or null when only distances were rendered */
     public Panorama(PanoramaGeometry geometry, int[] argb, float[] distanceMetres, Map<Layer, float[]> layers,
                     PanoramaMetadata metadata) {
         this.geometry = Objects.requireNonNull(geometry);
         int n = geometry.widthPx() * geometry.heightPx();
-        if (argb.length != n || distanceMetres.length != n) {
+        if ((argb != null && argb.length != n) || distanceMetres.length != n) {
             throw new IllegalArgumentException("arrays do not match " + geometry.widthPx() + "×" + geometry.heightPx());
         }
         this.argb = argb;
@@ -78,9 +79,21 @@ public final class Panorama {
         return distanceMetres[(int) row * widthPx() + col];
     }
 
-    /** Colour of a pixel, 0xAARRGGBB. */
+    /** Whether the colour image was rendered (see {@code PanoramaRequest.withColour}). */
+    public boolean hasColour() {
+        return argb != null;
+    }
+
+    /** Colour of a pixel, 0xAARRGGBB; throws if colour was not rendered. */
     public int argb(int column, int row) {
-        return argb[row * widthPx() + column];
+        return colour()[row * widthPx() + column];
+    }
+
+    private int[] colour() {
+        if (argb == null) {
+            throw new IllegalStateException("this panorama was rendered without colour (distances only)");
+        }
+        return argb;
     }
 
     /** A copy of the distance array (row-major, metres). */
@@ -102,10 +115,10 @@ public final class Panorama {
         return l.clone();
     }
 
-    /** The colour image. */
+    /** The colour image; throws if colour was not rendered. */
     public BufferedImage image() {
         BufferedImage img = new BufferedImage(widthPx(), heightPx(), BufferedImage.TYPE_INT_RGB);
-        img.setRGB(0, 0, widthPx(), heightPx(), argb, 0, widthPx());
+        img.setRGB(0, 0, widthPx(), heightPx(), colour(), 0, widthPx());
         return img;
     }
 

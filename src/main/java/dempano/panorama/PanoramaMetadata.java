@@ -26,13 +26,17 @@ import java.util.Map;
  * @param warnings              warnings for the user
  * @param timingsMillis         stage → wall time, milliseconds, in order
  * @param glRenderer            the OpenGL renderer string
+ * @param lodErrorPx            bound on the screen error of simplified terrain, pixels (0 = full resolution)
+ * @param terrainTriangles      triangles in the terrain mesh drawn (0 for the CPU reference, which
+ *                              intersects the full-resolution surface directly)
  */
 public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
                                double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
                                double rangeMetres, double refractionCoefficient, DepthMode depthMode,
                                double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
                                List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
-                               Map<String, Double> timingsMillis, String glRenderer) {
+                               Map<String, Double> timingsMillis, String glRenderer,
+                               double lodErrorPx, long terrainTriangles) {
     /** The earth model. */
     public static final String EARTH_MODEL = "WGS84 ellipsoid (exact ECEF/ENU), heights above sea level taken as ellipsoidal";
 }

@@ -42,7 +42,7 @@ public final class Stitcher {
      * Builds colour and distance for every panorama pixel.
      *
      * @param eyeDepth per view, eye depths from {@link #eyeDepths}
-     * @param argbOut  receives colour, row-major, row 0 at the top
+     * @param argbOut  receives colour, row-major, row 0 at the top; null to skip colour
      * @param rangeOut receives straight-line distance in metres, +∞ for sky
      */
     public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, double[][] eyeDepth,
@@ -56,7 +56,9 @@ public final class Stitcher {
                 int view = layout.viewOf(az);
                 double[] p = layout.project(view, az, el);
                 int i = row * width + col;
-                argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
+                if (argbOut != null) {
+                    argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
+                }
                 rangeOut[i] = (float) range(eyeDepth[view], layout, p, scratch);
             }
         });

@@ -4,7 +4,7 @@ package dempano.panorama;
  * What one rendered view gave back, in GL order (row 0 at the bottom).
  *
  * @param view     index of the view (0 = the one starting at north)
- * @param rgba     colour, 4 bytes a pixel
+ * @param rgba     colour, 4 bytes a pixel; null when colour was not rendered
  * @param depth    per pixel: the depth-buffer value (STANDARD_24, REVERSED_32F) or the range in
  *                 metres written by the shader (SHADER_RANGE, ≤ 0 where nothing was drawn)
  */

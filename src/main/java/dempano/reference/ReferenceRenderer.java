@@ -256,7 +256,8 @@ public final class ReferenceRenderer {
                     last = true;
                 }
                 double angle = Math.atan2(exit[1], exit[0]);
-                if (angle > maxAngle) {
+                // Only points ahead of the eye belong to this column (exit[0] ≤ 0 is below or behind it).
+                if (exit[0] > 0 && angle > maxAngle) {
                     double ds = exit[0] - entry[0], du = exit[1] - entry[1];
                     // Invariant: every pixel below `next` is hit, and elevation[next] > maxAngle.
                     while (next >= 0 && elevationRad[next] <= angle) {
@@ -408,11 +409,21 @@ public final class ReferenceRenderer {
             double y = s.eyeRow - r, x = s.eyeCol - c;
             boolean nwse = Triangulation.splitsNorthWestToSouthEast(r, c);
             int which = nwse ? (x >= y ? 0 : 1) : (x + y <= 1 ? 0 : 1);
+            // The triangle containing the foot, unless the plane only grazes it (the foot on a vertex or
+            // an edge): then the walk could set off backwards. Otherwise the neighbour whose cut
+            // straddles the eye and reaches farthest ahead.
             load(r, c, which);
-            if (crossingEdges() != null) {
-                return new int[] {r, c, which};
-            }
             double[] a = new double[3], b = new double[3];
+            int[] e0 = crossingEdges();
+            if (e0 != null) {
+                cut(e0[0], e0[1], a);
+                cut(e0[2], e0[3], b);
+                if (Math.max(a[0], b[0]) > 1e-6) {
+                    return new int[] {r, c, which};
+                }
+            }
+            int[] best = null;
+            double bestAhead = 1e-6;
             for (int dr = -1; dr <= 1; dr++) {
                 for (int dc = -1; dc <= 1; dc++) {
                     for (int hh = 0; hh < 2; hh++) {
@@ -427,13 +438,18 @@ public final class ReferenceRenderer {
                         }
                         cut(e[0], e[1], a);
                         cut(e[2], e[3], b);
-                        if (Math.min(a[0], b[0]) <= 1e-6 && Math.max(a[0], b[0]) >= -1e-6) {
-                            return new int[] {rr, cc, hh};
+                        double ahead = Math.max(a[0], b[0]);
+                        if (Math.min(a[0], b[0]) <= 1e-6 && ahead > bestAhead) {
+                            best = new int[] {rr, cc, hh};
+                            bestAhead = ahead;
                         }
                     }
                 }
             }
-            return null;
+            if (best != null) {
+                load(best[0], best[1], best[2]);
+            }
+            return best;
         }
     }
 }

@@ -173,10 +173,20 @@ public final class OffscreenRenderer {
      */
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release) {
+        return render(scene, layout, mode, nearMetres, farMetres, release, true);
+    }
+
+    /**
+     * As {@link #render(Node, ViewLayout, DepthMode, double, double, boolean)}; with {@code colour}
+     * false the colour target is not read back (captures carry no colour), and the terrain material
+     * should have {@code DistanceOnly} set so the shader skips shading.
+     */
+    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
+                                boolean release, boolean colour) {
         if (closed) {
             throw new IllegalStateException("renderer is closed");
         }
-        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release));
+        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release, colour));
         try {
             return f.get();
         } catch (InterruptedException e) {
@@ -268,7 +278,8 @@ public final class OffscreenRenderer {
             return fb;
         }
 
-        ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release) {
+        ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release,
+                                  boolean withColour) {
             int w = layout.widthPx(), h = layout.heightPx();
             boolean reversed = mode.reversedZ();
             FrameBuffer target = framebuffer(w, h, reversed);
@@ -323,11 +334,14 @@ public final class OffscreenRenderer {
                     renderManager.render(0, false);
                     renderer.setFrameBuffer(target);
                     GL11.glPixelStorei(GL11.GL_PACK_ALIGNMENT, 1);
-                    GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT0);
-                    colour.clear();
-                    GL11.glReadPixels(0, 0, w, h, GL11.GL_RGBA, GL11.GL_UNSIGNED_BYTE, colour);
-                    byte[] rgba = new byte[w * h * 4];
-                    colour.get(rgba);
+                    byte[] rgba = null;
+                    if (withColour) {
+                        GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT0);
+                        colour.clear();
+                        GL11.glReadPixels(0, 0, w, h, GL11.GL_RGBA, GL11.GL_UNSIGNED_BYTE, colour);
+                        rgba = new byte[w * h * 4];
+                        colour.get(rgba);
+                    }
                     depth.clear();
                     if (mode == DepthMode.SHADER_RANGE) {
                         GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);

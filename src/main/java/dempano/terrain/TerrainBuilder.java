@@ -18,6 +18,8 @@ import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
 import java.nio.FloatBuffer;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.List;
 
 /**
@@ -40,7 +42,7 @@ public final class TerrainBuilder {
     }
 
     /** What was built. */
-    public record Terrain(Node root, long vertices, long triangles, int blocks, int patches) {
+    public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel) {
     }
 
     /**
@@ -48,6 +50,17 @@ public final class TerrainBuilder {
      *                    the exact cut is made per fragment by the shader)
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material) {
+        return build(mosaic, eye, refraction, rangeMetres, material, 1, 0);
+    }
+
+    /**
+     * As {@link #build(Mosaic, Viewpoint, Refraction, double, Material)}, with each patch simplified
+     * as far as {@link LevelOfDetail} allows for a screen error of at most {@code maxErrorPx} pixels
+     * at {@code pixelsPerDegree} (0 = full resolution everywhere). Where neighbouring patches differ,
+     * vertical skirts as deep as both patches' errors together close the cracks between them.
+     */
+    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
+                                double pixelsPerDegree, double maxErrorPx) {
         LocalFrame frame = eye.eyeFrame();
         // Foot of the eye on the ellipsoid, for ground distances (refraction).
         double[] eyeFoot = new double[3];
@@ -77,9 +90,9 @@ public final class TerrainBuilder {
         VertexPlacer placer = new VertexPlacer(mosaic, frame, eyeFoot, refraction, r0, c0, sinLat, cosLat, sinLon, cosLon);
 
         Node root = new Node("terrain");
-        long vertices = 0, triangles = 0;
-        int blocks = 0, patches = 0;
         int b = BLOCK_INTERVALS;
+        Map<Long, PatchWork> work = new HashMap<>();
+        List<TerrainQuad> quads = new ArrayList<>();
         for (int br = r0; br < r1; br += b) {
             for (int bc = c0; bc < c1; bc += b) {
                 // Skip blocks entirely beyond range (nearest block point to the eye, in cells).
@@ -110,26 +123,66 @@ public final class TerrainBuilder {
                     minZ = Math.min(minZ, bb.getCenter().z - bb.getZExtent());
                 }
                 for (TerrainPatch p : ps) {
-                    boolean keep = placer.place(p, br, bc, minX, minZ, heights, b + 1, rangeMetres);
-                    if (!keep) {
+                    PatchWork w = placer.place(p, br, bc, minX, minZ, heights, b + 1, rangeMetres);
+                    if (w == null) {
                         p.removeFromParent();
                         continue;
                     }
-                    vertices += p.getMesh().getVertexCount();
-                    triangles += p.getMesh().getTriangleCount();
-                    patches++;
+                    w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
+                    work.put(key(w.row0, w.col0), w);
                 }
                 zeroTranslations(quad);
                 quad.setMaterial(material);
-                // Patches were moved: refresh bounds up the tree.
-                quad.updateModelBound();
-                quad.updateGeometricState();
-                root.attachChild(quad);
-                blocks++;
+                quads.add(quad);
             }
         }
+        long vertices = 0, triangles = 0;
+        int patches = 0;
+        int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(PATCH_INTERVALS) + 1];
+        for (PatchWork w : work.values()) {
+            double neighbours = 0;
+            int p = PATCH_INTERVALS;
+            for (long k : new long[] {key(w.row0 - p, w.col0), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p),
+                    key(w.row0, w.col0 + p)}) {
+                PatchWork n = work.get(k);
+                if (n != null) {
+                    neighbours = Math.max(neighbours, n.errorMetres());
+                }
+            }
+            double skirt = w.errorMetres() + neighbours;
+            placer.finish(w, skirt > 0 ? skirt + 0.5 : 0);
+            vertices += w.patch.getMesh().getVertexCount();
+            triangles += w.patch.getMesh().getTriangleCount();
+            patches++;
+            patchesPerLevel[w.level]++;
+        }
+        for (TerrainQuad quad : quads) {
+            // Patches were moved: refresh bounds up the tree.
+            quad.updateModelBound();
+            quad.updateGeometricState();
+            root.attachChild(quad);
+        }
+        int blocks = quads.size();
         root.updateGeometricState();
-        return new Terrain(root, vertices, triangles, blocks, patches);
+        return new Terrain(root, vertices, triangles, blocks, patches, patchesPerLevel);
+    }
+
+    private static long key(int row, int col) {
+        return ((long) row << 32) ^ (col & 0xffffffffL);
+    }
+
+    /** A patch between placing (all samples) and meshing (at its level). */
+    private static final class PatchWork {
+        TerrainPatch patch;
+        int row0, col0, side;
+        float[] positions, normals, elevations;
+        double nearestMetres;
+        double[] deviations;
+        int level;
+
+        double errorMetres() {
+            return deviations[level];
+        }
     }
 
     private static void collectPatches(Spatial s, List<TerrainPatch> out) {
@@ -190,56 +243,57 @@ public final class TerrainBuilder {
             this.cosLon = cosLon;
         }
 
+        /** Eye-relative position (jME axes) of a mosaic sample lifted by refraction; returns its ground distance. */
+        private double position(int r, int c, double elevationMetres, double dropMetres, double[] foot, double[] enu,
+                                float[] out, int at) {
+            int ri = Math.max(0, Math.min(sinLat.length - 1, r - r0)), ci = Math.max(0, Math.min(sinLon.length - 1, c - c0));
+            Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
+            double ground = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
+            double h = elevationMetres + refraction.liftMetres(ground) - dropMetres;
+            // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
+            double ex = foot[0] + h * cosLat[ri] * cosLon[ci];
+            double ey = foot[1] + h * cosLat[ri] * sinLon[ci];
+            double ez = foot[2] + h * sinLat[ri];
+            frame.ecefToEnu(ex, ey, ez, enu);
+            out[at] = (float) enu[0];
+            out[at + 1] = (float) enu[2];
+            out[at + 2] = (float) -enu[1];
+            return ground;
+        }
+
         /**
-         * Rewrites a patch's positions, normals and texture coordinates. Returns false if the whole
-         * patch lies beyond range.
+         * Computes a patch's exact positions, normals and elevations at every sample, and the
+         * deviations of its coarser levels. Returns null if the whole patch lies beyond range.
          */
-        boolean place(TerrainPatch p, int blockRow, int blockCol, float minX, float minZ, float[] heights,
-                      int blockSamples, double rangeMetres) {
+        PatchWork place(TerrainPatch p, int blockRow, int blockCol, float minX, float minZ, float[] heights,
+                        int blockSamples, double rangeMetres) {
             Mesh mesh = p.getMesh();
             FloatBuffer pos = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
             int n = mesh.getVertexCount();
+            int side = (int) Math.round(Math.sqrt(n));
             Vector3f t = p.getWorldTranslation();
+            // Block-relative row and column of the patch's first (north-west) vertex.
+            int gridRow0 = Math.round(pos.get(2) + t.z - minZ), gridCol0 = Math.round(pos.get(0) + t.x - minX);
             float[] out = new float[n * 3];
             float[] elevation = new float[n * 2];
-            int[] rowOf = new int[n], colOf = new int[n];
             double[] foot = new double[3], enu = new double[3];
-            double nearest = Double.POSITIVE_INFINITY;
+            double nearestGround = Double.POSITIVE_INFINITY, nearest = Double.POSITIVE_INFINITY;
             for (int k = 0; k < n; k++) {
                 float x = pos.get(3 * k) + t.x, y = pos.get(3 * k + 1), z = pos.get(3 * k + 2) + t.z;
                 int i = Math.round(z - minZ), j = Math.round(x - minX);
-                if (i < 0 || j < 0 || i >= blockSamples || j >= blockSamples || heights[i * blockSamples + j] != y) {
+                if (side * side != n || i != gridRow0 + k / side || j != gridCol0 + k % side
+                        || heights[i * blockSamples + j] != y) {
                     throw new IllegalStateException("jME terrain layout not as expected at vertex " + k);
                 }
                 int r = Math.min(blockRow + i, mosaic.rows() - 1), c = Math.min(blockCol + j, mosaic.cols() - 1);
-                rowOf[k] = r;
-                colOf[k] = c;
-                int ri = r - r0, ci = c - c0;
-                if (ri < 0 || ci < 0 || ri >= sinLat.length || ci >= sinLon.length) {
-                    ri = Math.max(0, Math.min(sinLat.length - 1, ri));
-                    ci = Math.max(0, Math.min(sinLon.length - 1, ci));
-                }
-                Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
-                double ground = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
-                nearest = Math.min(nearest, ground);
-                double h = y + refraction.liftMetres(ground);
-                // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
-                double ex = foot[0] + h * cosLat[ri] * cosLon[ci];
-                double ey = foot[1] + h * cosLat[ri] * sinLon[ci];
-                double ez = foot[2] + h * sinLat[ri];
-                frame.ecefToEnu(ex, ey, ez, enu);
-                out[3 * k] = (float) enu[0];
-                out[3 * k + 1] = (float) enu[2];
-                out[3 * k + 2] = (float) -enu[1];
+                nearestGround = Math.min(nearestGround, position(r, c, y, 0, foot, enu, out, 3 * k));
+                nearest = Math.min(nearest, Math.sqrt(enu[0] * enu[0] + enu[1] * enu[1] + enu[2] * enu[2]));
                 elevation[2 * k] = y;
             }
-            if (nearest > rangeMetres + 2000) {
-                return false;
+            if (nearestGround > rangeMetres + 2000) {
+                return null;
             }
-            // Block-relative row and column of the patch's first (north-west) vertex.
-            int gridRow0 = Math.round(pos.get(2) + t.z - minZ), gridCol0 = Math.round(pos.get(0) + t.x - minX);
             // Normals from the exact positions: central differences over the patch grid.
-            int side = (int) Math.round(Math.sqrt(n));
             float[] normals = new float[n * 3];
             for (int k = 0; k < n; k++) {
                 int gi = k / side, gj = k % side;
@@ -260,23 +314,90 @@ public final class TerrainBuilder {
                 normals[3 * k + 1] = ny / len;
                 normals[3 * k + 2] = nz / len;
             }
-            // Our own triangle list (jME's strip splits cells relative to each patch): the split is fixed
-            // to the mosaic grid, so the CPU reference can intersect exactly the same surface.
-            short[] indices = new short[(side - 1) * (side - 1) * 6];
-            int w = 0;
-            for (int gi = 0; gi < side - 1; gi++) {
-                for (int gj = 0; gj < side - 1; gj++) {
-                    int nw = gi * side + gj, ne = nw + 1, sw = nw + side, se = sw + 1;
+            PatchWork w = new PatchWork();
+            w.patch = p;
+            w.row0 = blockRow + gridRow0;
+            w.col0 = blockCol + gridCol0;
+            w.side = side;
+            w.positions = out;
+            w.normals = normals;
+            w.elevations = elevation;
+            w.nearestMetres = nearest;
+            w.deviations = LevelOfDetail.deviationsMetres(heights, blockSamples, gridRow0, gridCol0, side - 1);
+            return w;
+        }
+
+        /**
+         * Writes a patch's mesh at its level: every step-th sample, triangles split as
+         * {@link Triangulation} says (on the mosaic grid at full resolution, on the coarse grid
+         * otherwise), and skirts {@code skirtMetres} deep along its four edges when that is positive.
+         */
+        void finish(PatchWork w, double skirtMetres) {
+            int step = 1 << w.level, side = w.side, cs = (side - 1) / step + 1;
+            int edge = 4 * (cs - 1), skirtVertices = skirtMetres > 0 ? edge + 1 : 0;
+            int n = cs * cs + skirtVertices;
+            float[] positions = new float[n * 3], normals = new float[n * 3], elevations = new float[n * 2];
+            for (int gi = 0; gi < cs; gi++) {
+                for (int gj = 0; gj < cs; gj++) {
+                    int from = gi * step * side + gj * step, to = gi * cs + gj;
+                    System.arraycopy(w.positions, 3 * from, positions, 3 * to, 3);
+                    System.arraycopy(w.normals, 3 * from, normals, 3 * to, 3);
+                    elevations[2 * to] = w.elevations[2 * from];
+                }
+            }
+            int triangles = (cs - 1) * (cs - 1) * 2 + (skirtMetres > 0 ? 2 * edge : 0);
+            short[] indices = new short[triangles * 3];
+            int at = 0;
+            for (int gi = 0; gi < cs - 1; gi++) {
+                for (int gj = 0; gj < cs - 1; gj++) {
+                    int nw = gi * cs + gj, ne = nw + 1, sw = nw + cs, se = sw + 1;
+                    boolean nwToSe = step == 1 ? Triangulation.splitsNorthWestToSouthEast(w.row0 + gi, w.col0 + gj)
+                            : Triangulation.splitsNorthWestToSouthEast(gi, gj);
                     // Winding as jME's (counter-clockwise seen from above).
-                    if (Triangulation.splitsNorthWestToSouthEast(blockRow + gridRow0 + gi, blockCol + gridCol0 + gj)) {
-                        w = put(indices, w, se, ne, nw);
-                        w = put(indices, w, nw, sw, se);
+                    if (nwToSe) {
+                        at = put(indices, at, se, ne, nw);
+                        at = put(indices, at, nw, sw, se);
                     } else {
-                        w = put(indices, w, sw, se, ne);
-                        w = put(indices, w, sw, ne, nw);
+                        at = put(indices, at, sw, se, ne);
+                        at = put(indices, at, sw, ne, nw);
                     }
                 }
             }
+            if (skirtMetres > 0) {
+                // The patch's border, clockwise from the north-west corner, closed; each border vertex
+                // gets a twin skirtMetres lower along the ellipsoid normal.
+                int[] ring = new int[edge + 1];
+                int k = 0;
+                for (int j = 0; j < cs - 1; j++) {
+                    ring[k++] = j;
+                }
+                for (int i = 0; i < cs - 1; i++) {
+                    ring[k++] = i * cs + cs - 1;
+                }
+                for (int j = cs - 1; j > 0; j--) {
+                    ring[k++] = (cs - 1) * cs + j;
+                }
+                for (int i = cs - 1; i > 0; i--) {
+                    ring[k++] = i * cs;
+                }
+                ring[k] = ring[0];
+                double[] foot = new double[3], enu = new double[3];
+                int base = cs * cs;
+                for (int e = 0; e <= edge; e++) {
+                    int v = ring[e], gi = v / cs, gj = v % cs, twin = base + e;
+                    int r = Math.min(w.row0 + gi * step, mosaic.rows() - 1), c = Math.min(w.col0 + gj * step, mosaic.cols() - 1);
+                    position(r, c, elevations[2 * v], skirtMetres, foot, enu, positions, 3 * twin);
+                    System.arraycopy(normals, 3 * v, normals, 3 * twin, 3);
+                    elevations[2 * twin] = elevations[2 * v];
+                }
+                for (int e = 0; e < edge; e++) {
+                    int a = ring[e], b = ring[e + 1], a2 = base + e, b2 = base + e + 1;
+                    // Faces are not culled (see OffscreenRenderer), so one winding serves both sides.
+                    at = put(indices, at, a, b, b2);
+                    at = put(indices, at, a, b2, a2);
+                }
+            }
+            Mesh mesh = w.patch.getMesh();
             mesh.setMode(Mesh.Mode.Triangles);
             VertexBuffer oldIndex = mesh.getBuffer(VertexBuffer.Type.Index);
             if (oldIndex != null) {
@@ -286,10 +407,9 @@ public final class TerrainBuilder {
                 mesh.clearBuffer(VertexBuffer.Type.Index);
             }
             mesh.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createShortBuffer(indices));
-            mesh.updateCounts();
-            replace(mesh, VertexBuffer.Type.Position, 3, out);
+            replace(mesh, VertexBuffer.Type.Position, 3, positions);
             replace(mesh, VertexBuffer.Type.Normal, 3, normals);
-            replace(mesh, VertexBuffer.Type.TexCoord, 2, elevation);
+            replace(mesh, VertexBuffer.Type.TexCoord, 2, elevations);
             // Buffers the shader does not use: free them now.
             for (VertexBuffer.Type unused : new VertexBuffer.Type[] {VertexBuffer.Type.Tangent, VertexBuffer.Type.Binormal,
                     VertexBuffer.Type.TexCoord2}) {
@@ -297,9 +417,13 @@ public final class TerrainBuilder {
                     mesh.clearBuffer(unused);
                 }
             }
+            mesh.updateCounts();
             mesh.updateBound();
-            p.setModelBound(mesh.getBound().clone());
-            return true;
+            w.patch.setModelBound(mesh.getBound().clone());
+            // The full-resolution arrays are no longer needed.
+            w.positions = null;
+            w.normals = null;
+            w.elevations = null;
         }
 
         private static int put(short[] a, int w, int i, int j, int k) {

@@ -25,6 +25,10 @@ void main() {
         discard;
     }
     float range = length(vPosition);
+    outRange = vec4(range, 0.0, 0.0, 1.0);
+#ifdef DISTANCE_ONLY
+    outColour = vec4(0.0);
+#else
     vec3 n = normalize(vNormal);
     float light = 0.30 + 0.70 * max(dot(n, m_SunDirection), 0.0);
     vec3 colour = tint(vElevation) * light;
@@ -32,5 +36,5 @@ void main() {
     float haze = 1.0 - exp(-range / m_HazeMetres);
     colour = mix(colour, vec3(0.62, 0.68, 0.78), 0.85 * haze);
     outColour = vec4(colour, 1.0);
-    outRange = vec4(range, 0.0, 0.0, 1.0);
+#endif
 }

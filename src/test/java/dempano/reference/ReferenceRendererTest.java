@@ -118,4 +118,35 @@ class ReferenceRendererTest {
             }
         }
     }
+
+    /**
+     * The eye's foot exactly on a grid vertex, with terrain behind it higher than the eye: the plane of
+     * a column then only grazes the foot's triangle, and the walk must still set off forwards (it once
+     * went backwards and gave whole columns a distance of 0).
+     */
+    @Test
+    void eyeOnAGridVertexAmongHigherTerrainSetsOffForwards() {
+        // Rugged relief around the vertex at 46.5N 8.5E; the eye 30 m above it.
+        DoubleBinaryOperator rugged = (lat, lon) -> {
+            double y = (lat - EYE_LAT) * 111_195, x = (lon - EYE_LON) * 76_500;
+            return 1200 + 700 * Math.sin(x / 3100) * Math.cos(y / 4300) + 180 * Math.sin((x + 2 * y) / 900)
+                    + 60 * Math.cos((3 * x - y) / 310);
+        };
+        PanoramaRequest req = PanoramaRequest.at(EYE_LAT, EYE_LON).withRangeMetres(35_000).withEyeHeightMetres(30)
+                .withElevationRange(new ElevationRange(-40, 15, false));
+        Panorama p;
+        try (PanoramaRenderer r = PanoramaRenderer.openReference(Synthetic.dem(rugged, 46, 8, 1, 1))) {
+            p = r.render(req);
+        }
+        for (int col = 0; col < p.widthPx(); col++) {
+            for (int row = 0; row < p.heightPx(); row++) {
+                float d = p.distanceMetres(col, row);
+                assertTrue(d >= 15, "azimuth " + p.azimuthOfColumn(col) + " row " + row + ": " + d + " m");
+            }
+            // No pixel nearer than the ground under the eye allows (30 m at slopes up to 60°); at −40° the
+            // ground is within a few hundred metres in every direction.
+            double down = p.distanceMetres(col, p.heightPx() - 1);
+            assertTrue(down < 1000, "azimuth " + p.azimuthOfColumn(col) + ": " + down);
+        }
+    }
 }
