@@ -119,12 +119,18 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                 + " (" + terrain.triangles() / 1_000_000.0 + " M triangles)");
         ViewCapture[] captures;
+        long[] drawAndRead = new long[2];
         try {
-            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour());
+            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour(), drawAndRead);
         } finally {
             TerrainBuilder.destroyBuffers(terrain.root());
         }
-        t = lap(timings, "render", t);
+        long afterRender = System.nanoTime();
+        // "render" splits into drawing and reading back; what remains (scene upload, culling) is "upload".
+        timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1]) / 1e6);
+        timings.put("draw", drawAndRead[0] / 1e6);
+        timings.put("readback", drawAndRead[1] / 1e6);
+        t = afterRender;
 
         progress.accept("stitching");
         double[][] eyeDepth = new double[captures.length][];

@@ -183,10 +183,19 @@ public final class OffscreenRenderer {
      */
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release, boolean colour) {
+        return render(scene, layout, mode, nearMetres, farMetres, release, colour, new long[2]);
+    }
+
+    /**
+     * As above, also reporting where the time went: {@code drawAndReadNanos[0]} receives the time to
+     * draw (up to glFinish), {@code [1]} the time to read the targets back.
+     */
+    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
+                                boolean release, boolean colour, long[] drawAndReadNanos) {
         if (closed) {
             throw new IllegalStateException("renderer is closed");
         }
-        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release, colour));
+        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release, colour, drawAndReadNanos));
         try {
             return f.get();
         } catch (InterruptedException e) {
@@ -279,7 +288,7 @@ public final class OffscreenRenderer {
         }
 
         ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release,
-                                  boolean withColour) {
+                                  boolean withColour, long[] nanos) {
             int w = layout.widthPx(), h = layout.heightPx();
             boolean reversed = mode.reversedZ();
             FrameBuffer target = framebuffer(w, h, reversed);
@@ -331,8 +340,11 @@ public final class OffscreenRenderer {
                     GL30.glClearBufferfv(GL11.GL_COLOR, 0, OffscreenRenderer.SKY_RGBA);
                     GL30.glClearBufferfv(GL11.GL_COLOR, 1, new float[] {0, 0, 0, 0});
                     GL30.glClearBufferfv(GL11.GL_DEPTH, 0, new float[] {reversed ? 0f : 1f});
+                    long t0 = System.nanoTime();
                     renderManager.render(0, false);
                     renderer.setFrameBuffer(target);
+                    GL11.glFinish(); // so that drawing and reading back are timed apart
+                    long t1 = System.nanoTime();
                     GL11.glPixelStorei(GL11.GL_PACK_ALIGNMENT, 1);
                     byte[] rgba = null;
                     if (withColour) {
@@ -357,6 +369,8 @@ public final class OffscreenRenderer {
                         throw new IllegalStateException("OpenGL error 0x" + Integer.toHexString(err) + " rendering view " + k);
                     }
                     out[k] = new ViewCapture(k, rgba, d);
+                    nanos[0] += t1 - t0;
+                    nanos[1] += System.nanoTime() - t1;
                 }
             } finally {
                 GL45.glClipControl(GL30.GL_LOWER_LEFT, GL45.GL_NEGATIVE_ONE_TO_ONE);

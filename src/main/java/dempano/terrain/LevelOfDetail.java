@@ -52,6 +52,18 @@ public final class LevelOfDetail {
     }
 
     /**
+     * How far a flat coarse cell lies from the curved earth it spans: the sag of a chord across the
+     * cell's diagonal (√2 · side), d²/8R, with refraction's apparent flattening (R/(1−k)) counted only
+     * when it enlarges the sag (k < 0).
+     *
+     * @param cellSideMetres side of the coarse cell, metres (the longer of its two sides)
+     */
+    public static double chordSagMetres(double cellSideMetres, double refractionCoefficient) {
+        double diagonal = Math.sqrt(2) * cellSideMetres;
+        return diagonal * diagonal / (8 * 6_356_000.0) * Math.max(1, 1 - refractionCoefficient);
+    }
+
+    /**
      * Height on a cell's two triangles.
      *
      * @param u east fraction [0, 1]

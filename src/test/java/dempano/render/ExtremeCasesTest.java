@@ -182,7 +182,8 @@ class ExtremeCasesTest {
         // Only the tile under the eye exists (61² samples, 1'); all others are missing: sea level.
         InMemoryDem dem = Synthetic.tiles((la, lo) -> 0, 61, Synthetic.block(46, 8, 1, 1));
         PanoramaRequest req = PanoramaRequest.at(46.5, 8.5).withAltitudeMetres(h).withEyeHeightMetres(0)
-                .withRangeMetres(400_000).withRefraction(Refraction.NONE).withElevationRange(new ElevationRange(-8, 0, false));
+                .withRangeMetres(400_000).withRefraction(Refraction.NONE).withElevationRange(new ElevationRange(-8, 0, false))
+                .withLodErrorPx(0); // depth precision alone: no simplified terrain
         Panorama ref;
         try (PanoramaRenderer cpu = PanoramaRenderer.openReference(dem)) {
             ref = cpu.render(req);

@@ -39,7 +39,8 @@ class LevelOfDetailTest {
         double a = 0.25;
         float[] h = grid(64, (i, j) -> a * j * j);
         double[] dev = LevelOfDetail.deviationsMetres(h, 65, 0, 0, 64);
-        for (int level = 0; level <= 6; level++) {
+        assertEquals(0, dev[0]);
+        for (int level = 1; level <= 6; level++) {
             double s = 1 << level;
             assertEquals(a * (s / 2) * (s / 2), dev[level], 1e-3, "level " + level);
         }
@@ -89,5 +90,14 @@ class LevelOfDetailTest {
     @Test
     void patchSideMustBeAPowerOfTwo() {
         assertThrows(IllegalArgumentException.class, () -> LevelOfDetail.deviationsMetres(new float[49], 7, 0, 0, 6));
+    }
+
+    @Test
+    void chordSagMatchesTheCircleItCuts() {
+        // A chord of length L on a circle of radius R lies R − √(R² − L²/4) ≈ L²/8R below the arc.
+        double side = 5_000, r = 6_356_000, chord = Math.sqrt(2) * side;
+        assertEquals(r - Math.sqrt(r * r - chord * chord / 4), LevelOfDetail.chordSagMetres(side, 0.13), 1e-3);
+        assertEquals(LevelOfDetail.chordSagMetres(side, 0), LevelOfDetail.chordSagMetres(side, 0.13), 0, "k > 0 never lowers it");
+        assertEquals(1.5 * LevelOfDetail.chordSagMetres(side, 0), LevelOfDetail.chordSagMetres(side, -0.5), 1e-9);
     }
 }

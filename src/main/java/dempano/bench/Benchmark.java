@@ -1,0 +1,292 @@
+package dempano.bench;
+
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.dem.DemDirectory;
+import dempano.dem.HgtTile;
+import dempano.io.PanoramaWriter;
+import dempano.panorama.DistanceComparison;
+import dempano.panorama.Panorama;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code gradle bench}: speed and memory per scene, each case in a fresh JVM so that "cold" is
+ * honest (context, shaders, tile decoding, JIT all included) and peak memory is the process's own.
+ * Writes {@code docs/performance.md} and prints its tables.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true, description = "Speed and memory benchmark; writes docs/performance.md.")
+public final class Benchmark implements java.util.concurrent.Callable<Integer> {
+    @Option(names = "--out", description = "Directory for performance.md (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
+    Path outDir;
+    @Option(names = "--dem-cache", description = "Where generated tiles are kept (default: ${DEFAULT-VALUE}).", defaultValue = "build/bench-dem")
+    Path demCache;
+    @Option(names = "--shared", description = "The shared material folder with real tiles (default: ${DEFAULT-VALUE}).", defaultValue = "../shared")
+    Path shared;
+    @Option(names = "--cases", split = ",", description = "Only these cases (names as in the table).")
+    List<String> only;
+    @Option(names = "--child", hidden = true)
+    String child;
+
+    /** One measured configuration. */
+    record Case(String name, String scene, String dem, double lat, double lon, double rangeKm, double ppd, double lodPx,
+                boolean colour, String renderer, String heap, boolean compare) {
+    }
+
+    /** What a child reports. */
+    record Result(String name, double coldMillis, Map<String, Double> coldStages, double warmMillis,
+                  Map<String, Double> warmStages, double writeMillis, long peakRssBytes, long triangles, int tiles,
+                  double referenceMillis, double medianRel, double p99Rel, double skylineMeanPx, double shareOver5,
+                  String glRenderer, String error) {
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new Benchmark()).execute(args));
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (child != null) {
+            return runChild(new Gson().fromJson(child, Case.class));
+        }
+        Path srtm3 = FractalRelief.ensure(demCache.resolve("srtm3"), 45, 7, 3, 3, HgtTile.SRTM3_SAMPLES);
+        System.err.println("bench: generated 3×3 SRTM3 tiles in " + srtm3);
+        List<Case> cases = new ArrayList<>();
+        String s3 = srtm3.toString();
+        double lat = 46.5, lon = 8.5;
+        String scene3 = "3×3 SRTM3 (generated), 150 km";
+        cases.add(new Case("srtm3-150km", scene3, s3, lat, lon, 150, 20, 0.5, true, "opengl", "6g", true));
+        cases.add(new Case("srtm3-150km-full-res", scene3, s3, lat, lon, 150, 20, 0, true, "opengl", "6g", false));
+        cases.add(new Case("srtm3-150km-distance-only", scene3, s3, lat, lon, 150, 20, 0.5, false, "opengl", "6g", false));
+        cases.add(new Case("srtm3-150km-reference", scene3, s3, lat, lon, 150, 20, 0, true, "reference", "6g", false));
+        for (double r : new double[] {25, 50, 100, 200, 300}) {
+            cases.add(new Case("range-" + (int) r + "km", "range curve (3×3 SRTM3 area, sea beyond)", s3, lat, lon, r, 20, 0.5,
+                    true, "opengl", "6g", false));
+        }
+        for (double p : new double[] {10, 40}) {
+            cases.add(new Case("ppd-" + (int) p, "ppd curve (3×3 SRTM3, 150 km)", s3, lat, lon, 150, p, 0.5, true, "opengl",
+                    "6g", false));
+        }
+        Path real = shared.resolve("dem");
+        if (Files.isRegularFile(real.resolve("N43E006.hgt")) && Files.isRegularFile(real.resolve("N43E007.hgt"))) {
+            String sceneP = "Provence, real SRTM3 (N43E006/N43E007), 100 km";
+            cases.add(new Case("provence-100km", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0.5, true, "opengl", "6g", true));
+            cases.add(new Case("provence-100km-reference", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0, true,
+                    "reference", "6g", false));
+        } else {
+            System.err.println("bench: " + real + " lacks N43E006/N43E007: the real-tile scene is skipped");
+        }
+        if (only == null || only.stream().anyMatch(n -> n.startsWith("srtm1"))) {
+            Path srtm1 = FractalRelief.ensure(demCache.resolve("srtm1"), 44, 6, 5, 5, HgtTile.SRTM1_SAMPLES);
+            cases.add(new Case("srtm1-300km", "5×5 SRTM1 (generated), 300 km (sea beyond the 5×5)", srtm1.toString(), 46.5, 8.5,
+                    300, 20, 0.5, true, "opengl", "14g", false));
+        }
+        if (only != null) {
+            cases.removeIf(c -> !only.contains(c.name()));
+        }
+        List<Result> results = new ArrayList<>();
+        for (Case c : cases) {
+            System.err.println("bench: " + c.name() + " …");
+            Result r = spawn(c);
+            results.add(r);
+            System.err.println("bench: " + c.name() + (r.error() != null ? " FAILED: " + r.error()
+                    : String.format(Locale.ROOT, " cold %.2f s, warm %.2f s, peak %.2f GB", r.coldMillis() / 1e3,
+                            r.warmMillis() / 1e3, r.peakRssBytes() / 1e9)));
+        }
+        String md = report(cases, results);
+        Files.createDirectories(outDir);
+        Files.writeString(outDir.resolve("performance.md"), md);
+        System.out.println(md);
+        return 0;
+    }
+
+    private Result spawn(Case c) throws IOException, InterruptedException {
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        List<String> cmd = List.of(java, "-Xmx" + c.heap(), "-cp", System.getProperty("java.class.path"),
+                Benchmark.class.getName(), "--child", new Gson().toJson(c));
+        Process p = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        String last = null;
+        try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+            for (String line; (line = in.readLine()) != null; ) {
+                if (line.startsWith("RESULT ")) {
+                    last = line.substring(7);
+                }
+            }
+        }
+        int rc = p.waitFor();
+        if (last == null) {
+            return new Result(c.name(), Double.NaN, Map.of(), Double.NaN, Map.of(), Double.NaN, 0, 0, 0, Double.NaN, Double.NaN,
+                    Double.NaN, Double.NaN, Double.NaN, "", "child JVM exited with " + rc + " and no result (see its output)");
+        }
+        return new Gson().fromJson(last, Result.class);
+    }
+
+    /** In the fresh JVM: cold render at the viewpoint, then warm renders 2 km away. */
+    private static int runChild(Case c) {
+        Result r;
+        try {
+            r = measure(c);
+        } catch (Throwable e) {
+            r = new Result(c.name(), Double.NaN, Map.of(), Double.NaN, Map.of(), Double.NaN, peakRss(), 0, 0, Double.NaN,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, "", e.toString());
+        }
+        System.out.println("RESULT " + new GsonBuilder().serializeSpecialFloatingPointValues().create().toJson(r));
+        return 0;
+    }
+
+    private static Result measure(Case c) throws IOException {
+        long t0 = System.nanoTime();
+        DemDirectory dem = new DemDirectory(Path.of(c.dem()), 64);
+        boolean reference = c.renderer().equals("reference");
+        PanoramaRequest a = PanoramaRequest.at(c.lat(), c.lon()).withRangeMetres(c.rangeKm() * 1000)
+                .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour());
+        // Warm: another viewpoint in the same area, 2 km north-east.
+        PanoramaRequest b = PanoramaRequest.at(c.lat() + 0.0127, c.lon() + 0.0185).withRangeMetres(c.rangeKm() * 1000)
+                .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour());
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+            double openMillis = (System.nanoTime() - t0) / 1e6;
+            Panorama cold = r.render(a);
+            double coldMillis = (System.nanoTime() - t0) / 1e6;
+            Map<String, Double> coldStages = new LinkedHashMap<>();
+            coldStages.put("context", openMillis);
+            coldStages.putAll(cold.metadata().timingsMillis());
+            Path tmp = Files.createTempDirectory("dempano-bench");
+            long w0 = System.nanoTime();
+            List<Path> written = PanoramaWriter.write(cold, tmp.resolve("p").toString(), false);
+            double writeMillis = (System.nanoTime() - w0) / 1e6;
+            for (Path f : written) {
+                Files.deleteIfExists(f);
+            }
+            Files.deleteIfExists(tmp);
+            // Warm: three renders, the median reported.
+            double[] warm = new double[3];
+            Panorama last = null;
+            List<Map<String, Double>> stages = new ArrayList<>();
+            for (int i = 0; i < warm.length; i++) {
+                long s = System.nanoTime();
+                last = r.render(b);
+                warm[i] = (System.nanoTime() - s) / 1e6;
+                stages.add(last.metadata().timingsMillis());
+            }
+            int median = argMedian(warm);
+            double refMillis = Double.NaN, med = Double.NaN, p99 = Double.NaN, sky = Double.NaN, over5 = Double.NaN;
+            if (c.compare()) {
+                try (PanoramaRenderer cpu = PanoramaRenderer.openReference(dem)) {
+                    cpu.render(b); // warm its JIT too
+                    long s = System.nanoTime();
+                    Panorama ref = cpu.render(b);
+                    refMillis = (System.nanoTime() - s) / 1e6;
+                    DistanceComparison d = DistanceComparison.of(last.distanceArray(), ref.distanceArray(), ref.widthPx());
+                    med = d.medianRelative();
+                    p99 = d.p99Relative();
+                    sky = d.skylineMeanAbsPx();
+                    over5 = d.shareOver5Percent();
+                }
+            }
+            return new Result(c.name(), coldMillis, coldStages, warm[median], stages.get(median), writeMillis, peakRss(),
+                    last.metadata().terrainTriangles(), last.metadata().tilesUsed().size(), refMillis, med, p99, sky, over5,
+                    r.glRenderer(), null);
+        }
+    }
+
+    private static int argMedian(double[] v) {
+        Integer[] idx = {0, 1, 2};
+        java.util.Arrays.sort(idx, (i, j) -> Double.compare(v[i], v[j]));
+        return idx[1];
+    }
+
+    /** Peak resident set of this process (Java heap, native buffers, the GL driver), bytes. */
+    static long peakRss() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("VmHWM:")) {
+                    return Long.parseLong(line.replaceAll("[^0-9]", "")) * 1024;
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // not Linux: reported as 0
+        }
+        return 0;
+    }
+
+    private static String f(double v, String fmt) {
+        return Double.isNaN(v) ? "–" : String.format(Locale.ROOT, fmt, v);
+    }
+
+    private static String stages(Map<String, Double> m) {
+        StringBuilder sb = new StringBuilder();
+        m.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : ", ").append(k).append(' ').append(Math.round(v)));
+        return sb.toString();
+    }
+
+    static String report(List<Case> cases, List<Result> results) throws IOException {
+        StringBuilder md = new StringBuilder();
+        String commit = git("rev-parse", "--short", "HEAD"), dirty = git("status", "--porcelain", "--untracked-files=no");
+        String gl = results.stream().map(Result::glRenderer).filter(s -> s != null && !s.isEmpty() && !s.startsWith("dempano"))
+                .findFirst().orElse("?");
+        md.append("# Performance\n\nGenerated by `gradle bench` (class `dempano.bench.Benchmark`); do not edit by hand.\n\n");
+        md.append(String.format(Locale.ROOT, "- Commit `%s`%s; %d cores, Java %s; OpenGL renderer `%s`.%n", commit,
+                dirty.isEmpty() ? "" : " (with uncommitted changes)", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"), gl));
+        md.append("- 360° panoramas, elevation −30°…30°, refraction 0.13, eye 2 m above the DEM. Each case runs in a fresh JVM:\n"
+                + "  **cold** = opening the renderer (GL context, shaders) + the first render, tiles decoded from disk;\n"
+                + "  **warm** = median of three renders of another viewpoint 2 km away in the same JVM (tiles cached).\n"
+                + "- Stages (ms): context, tiles (load + mosaic), mesh (level of detail, vertex placement), upload (scene to GL,\n"
+                + "  culling), draw (8 views, to glFinish), readback, stitch; write = PNG + .npy + distance PNG + JSON.\n"
+                + "- Peak memory: the process's peak resident set (VmHWM: heap, native buffers and the GL driver).\n"
+                + "- LOD: bound on the screen error of simplified terrain, panorama pixels (0 = full resolution).\n"
+                + "- Error: the warm panorama against the CPU reference on the full-resolution surface (relative distance error).\n"
+                + "- Generated relief: `dempano.bench.FractalRelief` (ridged fractal noise, rough at every scale), as .hgt files.\n\n");
+        md.append("| case | scene | renderer | ppd | LOD px | colour | cold s | warm s | warm stages ms | write ms | peak GB | triangles | median err | p99 err | skyline px | reference s |\n");
+        md.append("|---|---|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (int i = 0; i < cases.size(); i++) {
+            Case c = cases.get(i);
+            Result r = results.get(i);
+            if (r.error() != null) {
+                md.append(String.format(Locale.ROOT, "| %s | %s | %s | %.0f | %s | %s | failed: %s |||||||||%n", c.name(), c.scene(),
+                        c.renderer(), c.ppd(), f(c.lodPx(), "%.2g"), c.colour() ? "yes" : "no", r.error().replace('|', '/')));
+                continue;
+            }
+            md.append(String.format(Locale.ROOT, "| %s | %s | %s | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |%n",
+                    c.name(), c.scene(), c.renderer(), c.ppd(), c.renderer().equals("reference") ? "exact" : f(c.lodPx(), "%.2g"),
+                    c.colour() ? "yes" : "no", f(r.coldMillis() / 1e3, "%.2f"), f(r.warmMillis() / 1e3, "%.2f"),
+                    stages(r.warmStages()), f(r.writeMillis(), "%.0f"), f(r.peakRssBytes() / 1e9, "%.2f"),
+                    r.triangles() == 0 ? "–" : String.format(Locale.ROOT, "%.2f M", r.triangles() / 1e6),
+                    f(r.medianRel() * 100, "%.1e %%"), f(r.p99Rel() * 100, "%.2g %%"), f(r.skylineMeanPx(), "%.3f"),
+                    f(r.referenceMillis() / 1e3, "%.2f")));
+        }
+        md.append("\nCold stages (ms) per case:\n\n| case | cold stages ms |\n|---|---|\n");
+        for (int i = 0; i < cases.size(); i++) {
+            if (results.get(i).error() == null) {
+                md.append("| ").append(cases.get(i).name()).append(" | ").append(stages(results.get(i).coldStages())).append(" |\n");
+            }
+        }
+        return md.toString();
+    }
+
+    private static String git(String... args) {
+        try {
+            List<String> cmd = new ArrayList<>(List.of("git"));
+            cmd.addAll(List.of(args));
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+            return p.waitFor() == 0 ? out : "?";
+        } catch (IOException | InterruptedException e) {
+            return "?";
+        }
+    }
+}
