@@ -71,6 +71,9 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         String scene3 = "3×3 SRTM3 (generated), 150 km";
         cases.add(new Case("srtm3-150km", scene3, s3, lat, lon, 150, 20, 0.5, true, "opengl", "6g", true));
         cases.add(new Case("srtm3-150km-full-res", scene3, s3, lat, lon, 150, 20, 0, true, "opengl", "6g", false));
+        for (double lod : new double[] {0.25, 1, 2}) {
+            cases.add(new Case("srtm3-150km-lod-" + lod, scene3, s3, lat, lon, 150, 20, lod, true, "opengl", "6g", true));
+        }
         cases.add(new Case("srtm3-150km-distance-only", scene3, s3, lat, lon, 150, 20, 0.5, false, "opengl", "6g", false));
         cases.add(new Case("srtm3-150km-reference", scene3, s3, lat, lon, 150, 20, 0, true, "reference", "6g", false));
         for (double r : new double[] {25, 50, 100, 200, 300}) {

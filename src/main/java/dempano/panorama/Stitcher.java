@@ -19,9 +19,17 @@ public final class Stitcher {
     public static double[] eyeDepths(ViewCapture c, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
         double[] z = new double[c.depth().length];
         int w = layout.widthPx();
-        for (int i = 0; i < z.length; i++) {
-            float d = c.depth()[i];
-            switch (mode) {
+        IntStream.range(0, layout.heightPx()).parallel().forEach(row -> {
+            for (int i = row * w; i < (row + 1) * w; i++) {
+                eyeDepth(c.depth()[i], i, z, w, layout, mode, nearMetres, farMetres);
+            }
+        });
+        return z;
+    }
+
+    private static void eyeDepth(float d, int i, double[] z, int w, ViewLayout layout, DepthMode mode, double nearMetres,
+                                 double farMetres) {
+        switch (mode) {
                 case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres);
                 case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
                 case SHADER_RANGE -> {
@@ -33,9 +41,7 @@ public final class Stitcher {
                     }
                 }
                 default -> throw new IllegalStateException();
-            }
         }
-        return z;
     }
 
     /**
@@ -48,13 +54,30 @@ public final class Stitcher {
     public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, double[][] eyeDepth,
                               int[] argbOut, float[] rangeOut) {
         int width = g.widthPx();
+        // Per column: its view, x in the view, and the secant of its angle off the view's axis;
+        // a row's y in a view is then tan(elevation)·secant (see ViewLayout.project).
+        int[] viewOfCol = new int[width];
+        double[] pxOfCol = new double[width], xTanOfCol = new double[width], secOfCol = new double[width];
+        for (int col = 0; col < width; col++) {
+            double az = g.azimuthOfColumn(col);
+            viewOfCol[col] = layout.viewOf(az);
+            double[] q = layout.project(viewOfCol[col], az, 0);
+            pxOfCol[col] = q[0];
+            xTanOfCol[col] = q[2];
+            secOfCol[col] = Math.sqrt(1 + q[2] * q[2]);
+        }
+        double yScale = layout.heightPx() / (layout.topTan() - layout.bottomTan());
         IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
-            double el = g.elevationOfRow(row);
+            double tanEl = Math.tan(Math.toRadians(g.elevationOfRow(row)));
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
+            double[] p = new double[4];
             for (int col = 0; col < width; col++) {
-                double az = g.azimuthOfColumn(col);
-                int view = layout.viewOf(az);
-                double[] p = layout.project(view, az, el);
+                int view = viewOfCol[col];
+                double yTan = tanEl * secOfCol[col];
+                p[0] = pxOfCol[col];
+                p[1] = (yTan - layout.bottomTan()) * yScale - 0.5;
+                p[2] = xTanOfCol[col];
+                p[3] = yTan;
                 int i = row * width + col;
                 if (argbOut != null) {
                     argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
@@ -105,6 +128,19 @@ public final class Stitcher {
     static double range(double[] z, ViewLayout l, double[] p, double[][] w) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         double fx = p[0] - x0, fy = p[1] - y0;
+        // Fast path, most pixels: the central 2×2 are one smooth surface, or all sky.
+        {
+            int xa = clampX(l, x0), xb = clampX(l, x0 + 1), ya = clampY(l, y0) * l.widthPx(), yb = clampY(l, y0 + 1) * l.widthPx();
+            double z00 = z[ya + xa], z01 = z[ya + xb], z10 = z[yb + xa], z11 = z[yb + xb];
+            double lo = Math.min(Math.min(z00, z01), Math.min(z10, z11)), hi = Math.max(Math.max(z00, z01), Math.max(z10, z11));
+            if (lo == Double.POSITIVE_INFINITY) {
+                return Double.POSITIVE_INFINITY;
+            }
+            if (hi <= lo * SAME_SURFACE_RATIO) {
+                double inv = (1 - fy) * ((1 - fx) / z00 + fx / z01) + fy * ((1 - fx) / z10 + fx / z11);
+                return DepthLinearizer.rangeFromEyeDepth(1 / inv, p[2], p[3]);
+            }
+        }
         // w: [dy + 1][dx + 1] of 1/z for dy, dx in -1..2 (a 4×4 buffer the caller reuses)
         for (int dy = -1; dy <= 2; dy++) {
             for (int dx = -1; dx <= 2; dx++) {
