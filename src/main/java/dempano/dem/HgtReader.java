@@ -62,8 +62,9 @@ public final class HgtReader {
                 heights[i] = v;
             }
         }
+        java.util.BitSet mask = VoidFiller.voidMask(heights);
         VoidReport voids = VoidFiller.fill(heights, n);
-        return new HgtTile(id, source, n, heights, voids);
+        return new HgtTile(id, source, n, heights, voids, mask);
     }
 
     private static int samplesForLength(String source, long length) {

@@ -18,8 +18,15 @@ public final class HgtTile {
     private final int samplesPerSide;
     private final float[] heightsMetres;
     private final VoidReport voids;
+    private final java.util.BitSet filledVoids;
 
     HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids) {
+        this(id, source, samplesPerSide, heightsMetres, voids, new java.util.BitSet());
+    }
+
+    HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids,
+            java.util.BitSet filledVoids) {
+        this.filledVoids = (java.util.BitSet) filledVoids.clone();
         this.id = Objects.requireNonNull(id);
         this.source = Objects.requireNonNull(source);
         if (heightsMetres.length != samplesPerSide * samplesPerSide) {
@@ -39,8 +46,9 @@ public final class HgtTile {
             throw new IllegalArgumentException("need " + samplesPerSide + "² heights, got " + heightsMetres.length);
         }
         float[] copy = heightsMetres.clone();
+        java.util.BitSet mask = VoidFiller.voidMask(copy);
         VoidReport report = VoidFiller.fill(copy, samplesPerSide);
-        return new HgtTile(id, source, samplesPerSide, copy, report);
+        return new HgtTile(id, source, samplesPerSide, copy, report, mask);
     }
 
     public TileId id() {
@@ -65,6 +73,11 @@ public final class HgtTile {
     /** Height in metres at a sample; row 0 north, column 0 west. */
     public float heightMetres(int row, int col) {
         return heightsMetres[row * samplesPerSide + col];
+    }
+
+    /** True if the sample was a void, its height now interpolated. */
+    public boolean isFilledVoid(int row, int col) {
+        return filledVoids.get(row * samplesPerSide + col);
     }
 
     /** What void filling found and did. */

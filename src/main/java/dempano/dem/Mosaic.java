@@ -29,8 +29,16 @@ public final class Mosaic {
     private final List<TileId> tilesMissing;
     private final List<String> warnings;
 
+    /** Per sample: {@link #FLAG_FILLED_VOID}, {@link #FLAG_MISSING_TILE} (null when none is set). */
+    private final byte[] flags;
+    /** A sample whose height was interpolated over a void. */
+    public static final int FLAG_FILLED_VOID = 1;
+    /** A sample of a missing tile (sea level stands in). */
+    public static final int FLAG_MISSING_TILE = 2;
+
     private Mosaic(TileSelection sel, int intervalsPerDegree, float[] heights, List<TileId> used,
-                   List<TileId> missing, List<String> warnings) {
+                   List<TileId> missing, List<String> warnings, byte[] flags) {
+        this.flags = flags;
         this.latSouthDeg = sel.latSouthDeg();
         this.lonWestDeg = sel.lonWestDeg();
         this.tilesNorthSouth = sel.tilesNorthSouth();
@@ -110,11 +118,22 @@ public final class Mosaic {
         }
         float[] h = new float[rows * cols];
         Arrays.fill(h, Float.NaN);
+        boolean anyFlag = !missing.isEmpty();
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                anyFlag |= t != null && t.voids().voidCells() > 0;
+            }
+        }
+        byte[] flags = anyFlag ? new byte[rows * cols] : null;
         // Missing tiles first, so that a present neighbour's values win on the shared edge.
         for (int r = 0; r < sel.tilesNorthSouth(); r++) {
             for (int c = 0; c < sel.tilesEastWest(); c++) {
                 if (sel.touched()[r][c] && tiles[r][c] == null) {
                     fillBlock(h, cols, r * ipd, c * ipd, ipd, 0f);
+                    for (int i = 0; i <= ipd; i++) {
+                        Arrays.fill(flags, (r * ipd + i) * cols + c * ipd, (r * ipd + i) * cols + c * ipd + ipd + 1,
+                                (byte) FLAG_MISSING_TILE);
+                    }
                 }
             }
         }
@@ -123,10 +142,29 @@ public final class Mosaic {
                 HgtTile t = tiles[r][c];
                 if (t != null) {
                     copyTile(h, cols, r * ipd, c * ipd, ipd, t);
+                    if (flags != null) {
+                        markVoids(flags, cols, r * ipd, c * ipd, ipd, t);
+                    }
                 }
             }
         }
-        return new Mosaic(sel, ipd, h, used, missing, warnings);
+        return new Mosaic(sel, ipd, h, used, missing, warnings, flags);
+    }
+
+    private static void markVoids(byte[] flags, int cols, int row0, int col0, int ipd, HgtTile t) {
+        int step = ipd / t.intervalsPerDegree(); // a coarser tile beside finer ones: its samples on the finer grid
+        for (int r = 0; r <= ipd; r++) {
+            for (int c = 0; c <= ipd; c++) {
+                int i = (row0 + r) * cols + col0 + c;
+                flags[i] = (byte) (r % step == 0 && c % step == 0 && t.isFilledVoid(r / step, c / step) ? FLAG_FILLED_VOID
+                        : flags[i] & ~FLAG_FILLED_VOID & ~FLAG_MISSING_TILE);
+            }
+        }
+    }
+
+    /** Debug flags of a sample ({@link #FLAG_FILLED_VOID}, {@link #FLAG_MISSING_TILE}); 0 for a plain sample. */
+    public int flags(int row, int col) {
+        return flags == null ? 0 : flags[row * cols + col];
     }
 
     private static void fillBlock(float[] h, int cols, int row0, int col0, int ipd, float value) {

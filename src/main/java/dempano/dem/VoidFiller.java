@@ -15,6 +15,17 @@ final class VoidFiller {
     private VoidFiller() {
     }
 
+    /** The NaN samples of a grid (before filling). */
+    static java.util.BitSet voidMask(float[] h) {
+        java.util.BitSet mask = new java.util.BitSet();
+        for (int i = 0; i < h.length; i++) {
+            if (Float.isNaN(h[i])) {
+                mask.set(i);
+            }
+        }
+        return mask;
+    }
+
     /** Fills NaN samples of a square grid in place and reports them. */
     static VoidReport fill(float[] h, int n) {
         int voids = 0;

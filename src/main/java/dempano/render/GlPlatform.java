@@ -55,6 +55,22 @@ final class GlPlatform {
         configured = true;
     }
 
+    /**
+     * For a visible window (the fly-through): X11 when {@code DEMPANO_GL=x11}, otherwise whatever GLFW
+     * finds (never the null platform, which has no screen).
+     */
+    static synchronized void configureWindow() {
+        String choice = choice();
+        glfwInitHint(GLFW_PLATFORM, choice.equals("x11") || choice.equals("glx") ? GLFW_PLATFORM_X11
+                : org.lwjgl.glfw.GLFW.GLFW_ANY_PLATFORM);
+    }
+
+    /** What to tell a user whose window failed. */
+    static String windowHint() {
+        return "the fly-through needs a display: $DISPLAY is " + System.getenv("DISPLAY")
+                + "; without a screen run it under 'xvfb-run -a' with DEMPANO_GL=x11 (apt-get install xvfb xauth)";
+    }
+
     @SuppressWarnings("unchecked")
     private static void addWindowHint(Runnable hint) {
         try {

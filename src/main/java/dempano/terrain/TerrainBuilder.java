@@ -71,6 +71,15 @@ public final class TerrainBuilder {
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx) {
+        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, 1);
+    }
+
+    /**
+     * As above, heights multiplied by {@code exaggeration} (the fly-through's vertical exaggeration;
+     * 1 for panoramas). The colour and the level of detail use the true heights.
+     */
+    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
+                                double pixelsPerDegree, double maxErrorPx, double exaggeration) {
         LocalFrame frame = eye.eyeFrame();
         double[] eyeFoot = new double[3];
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
@@ -97,7 +106,7 @@ public final class TerrainBuilder {
             sinLon[c] = Math.sin(lam);
             cosLon[c] = Math.cos(lam);
         }
-        Placer placer = new Placer(mosaic, frame, eyeFoot, refraction, r0, c0, sinLat, cosLat, sinLon, cosLon);
+        Placer placer = new Placer(mosaic, frame, eyeFoot, refraction, r0, c0, sinLat, cosLat, sinLon, cosLon, exaggeration);
 
         // Patches on a grid aligned to the window's corner.
         int p = PATCH_INTERVALS;
@@ -226,9 +235,11 @@ public final class TerrainBuilder {
         private final Refraction refraction;
         private final int r0, c0;
         private final double[] sinLat, cosLat, sinLon, cosLon;
+        private final double exaggeration;
 
         Placer(Mosaic mosaic, LocalFrame frame, double[] eyeFoot, Refraction refraction, int r0, int c0,
-               double[] sinLat, double[] cosLat, double[] sinLon, double[] cosLon) {
+               double[] sinLat, double[] cosLat, double[] sinLon, double[] cosLon, double exaggeration) {
+            this.exaggeration = exaggeration;
             this.mosaic = mosaic;
             this.frame = frame;
             this.eyeFoot = eyeFoot;
@@ -274,8 +285,10 @@ public final class TerrainBuilder {
                 for (int gj = 0; gj < cs; gj++) {
                     int c = Math.min(w.col0 + gj * step, mosaic.cols() - 1), k = gi * cs + gj;
                     float h = w.heights[gi * step * (p + 1) + gj * step];
-                    position(r, c, h, 0, foot, enu, positions, 3 * k);
+                    position(r, c, h * exaggeration, 0, foot, enu, positions, 3 * k);
                     elevations[2 * k] = h;
+                    boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
+                    elevations[2 * k + 1] = mosaic.flags(r, c) | (seam ? 4 : 0);
                 }
             }
             // Normals from the exact positions: central differences over the drawn grid.
@@ -340,9 +353,10 @@ public final class TerrainBuilder {
                 for (int e = 0; e <= edge; e++) {
                     int v = ring[e], gi = v / cs, gj = v % cs, twin = base + e;
                     int r = Math.min(w.row0 + gi * step, mosaic.rows() - 1), c = Math.min(w.col0 + gj * step, mosaic.cols() - 1);
-                    position(r, c, elevations[2 * v], skirtMetres, foot, enu, positions, 3 * twin);
+                    position(r, c, elevations[2 * v] * exaggeration, skirtMetres, foot, enu, positions, 3 * twin);
                     System.arraycopy(normals, 3 * v, normals, 3 * twin, 3);
                     elevations[2 * twin] = elevations[2 * v];
+                    elevations[2 * twin + 1] = elevations[2 * v + 1];
                 }
                 for (int e = 0; e < edge; e++) {
                     // Faces are not culled (see OffscreenRenderer), so one winding serves both sides.

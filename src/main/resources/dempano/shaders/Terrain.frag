@@ -1,6 +1,8 @@
 in vec3 vPosition;
 in vec3 vNormal;
 in float vElevation;
+flat in int vFlags;
+uniform vec3 g_CameraPosition;
 uniform float m_RangeMetres;
 uniform float m_HazeMetres;
 uniform vec3 m_SunDirection;
@@ -24,7 +26,8 @@ void main() {
     if (length(vPosition.xz) > m_RangeMetres) {
         discard;
     }
-    float range = length(vPosition);
+    // The camera is at the origin for panoramas; the fly-through moves it.
+    float range = length(vPosition - g_CameraPosition);
     outRange = vec4(range, 0.0, 0.0, 1.0);
 #ifdef DISTANCE_ONLY
     outColour = vec4(0.0);
@@ -35,6 +38,12 @@ void main() {
     // Aerial perspective: far terrain fades toward a blue-grey that stays darker than the sky.
     float haze = 1.0 - exp(-range / m_HazeMetres);
     colour = mix(colour, vec3(0.62, 0.68, 0.78), 0.85 * haze);
+#ifdef DEBUG_AIDS
+    // Fly-through debugging: filled voids magenta, missing tiles red, tile seams yellow.
+    if ((vFlags & 1) != 0) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.8);
+    if ((vFlags & 2) != 0) colour = mix(colour, vec3(1.0, 0.1, 0.1), 0.6);
+    if ((vFlags & 4) != 0) colour = vec3(1.0, 0.9, 0.0);
+#endif
     outColour = vec4(colour, 1.0);
 #endif
 }

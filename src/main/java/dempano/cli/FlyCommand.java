@@ -1,0 +1,77 @@
+package dempano.cli;
+
+import dempano.dem.DemoTerrain;
+import dempano.geo.Refraction;
+import dempano.render.OnscreenRenderer;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code dempano fly}: the on-screen fly-through over a DEM (see {@link OnscreenRenderer#KEYS}). */
+@Command(name = "fly", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Fly over the DEM in a window to look for anomalies (voids, spikes, seams, wrong altitudes).",
+            "Keys: W/S forward/back, A/D left/right, Q/Z up/down, arrows or mouse drag turn; +/- speed;",
+            "F1 wireframe, F2 debug colours (filled voids magenta, missing tiles red, tile seams yellow),",
+            "F3 vertical exaggeration, F4 curvature/refraction, P panorama here, K screenshot, Esc quit.",
+            "Needs a display (under Xvfb: DEMPANO_GL=x11 xvfb-run -a ...)."})
+public final class FlyCommand implements Callable<Integer> {
+    @Option(names = "--lat", description = "Start latitude, degrees north. Default: the demo scene's.")
+    Double latDeg;
+    @Option(names = "--lon", description = "Start longitude, degrees east. Default: the demo scene's.")
+    Double lonDeg;
+    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of SRTM tiles. Default: the demo DEM.")
+    Path demDir;
+    @Option(names = "--above-ground-m", description = "Start height above the DEM, metres (default: ${DEFAULT-VALUE}).", defaultValue = "300")
+    double aboveGroundMetres;
+    @Option(names = "--range-km", description = "Terrain built within this distance of the start, km (default: ${DEFAULT-VALUE}).", defaultValue = "40")
+    double rangeKm;
+    @Option(names = "--heading-deg", description = "Start heading, degrees clockwise from north (default: ${DEFAULT-VALUE}).", defaultValue = "0")
+    double headingDeg;
+    @Option(names = "--pitch-deg", description = "Start pitch, degrees up (default: ${DEFAULT-VALUE}).", defaultValue = "-10")
+    double pitchDeg;
+    @Option(names = "--speed-mps", description = "Flight speed, metres per second (default: ${DEFAULT-VALUE}).", defaultValue = "200")
+    double speed;
+    @Option(names = "--frames", description = "Scripted: fly this many frames (1/30 s each) straight along the heading, write --screenshot and quit (default: interactive).", defaultValue = "0")
+    int frames;
+    @Option(names = "--screenshot", paramLabel = "FILE", description = "Scripted mode's screenshot (PNG).")
+    Path screenshot;
+    @Option(names = "--no-dialog", description = "Skip jME's settings dialog (resolution, full screen).")
+    boolean noDialog;
+    @Option(names = "--wireframe", description = "Start in wireframe.")
+    boolean wireframe;
+    @Option(names = "--debug-colours", description = "Start with filled voids, missing tiles and tile seams highlighted.")
+    boolean debugColours;
+    @Option(names = "--exaggeration", description = "Vertical exaggeration (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    double exaggeration;
+    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient; 1 = flat earth (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
+    double refraction;
+    @Option(names = "--width", description = "Window width, pixels (default: ${DEFAULT-VALUE}).", defaultValue = "1280")
+    int width;
+    @Option(names = "--height", description = "Window height, pixels (default: ${DEFAULT-VALUE}).", defaultValue = "720")
+    int height;
+    @Option(names = "--out-dir", paramLabel = "DIR", description = "Where panoramas (P) and screenshots (K) go (default: ${DEFAULT-VALUE}).", defaultValue = "build/fly")
+    Path outDir;
+
+    @Override
+    public Integer call() throws Exception {
+        boolean demo = latDeg == null && lonDeg == null && demDir == null;
+        if (!demo && (latDeg == null || lonDeg == null || demDir == null)) {
+            throw new IllegalArgumentException("give --lat, --lon and --dem-dir (or none of them, for the demo scene)");
+        }
+        if (frames < 0 || (frames > 0 && screenshot == null)) {
+            throw new IllegalArgumentException("--frames needs --screenshot FILE (and a count ≥ 1)");
+        }
+        if (!(rangeKm > 0 && rangeKm <= 300) || !(exaggeration >= 0.1 && exaggeration <= 100) || !(speed > 0)
+                || width < 64 || height < 64) {
+            throw new IllegalArgumentException("range must be in (0, 300] km, exaggeration in [0.1, 100], speed > 0, "
+                    + "window at least 64×64");
+        }
+        new Refraction(refraction); // validates
+        Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
+        double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
+        return OnscreenRenderer.fly(new OnscreenRenderer.Options(dir, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
+                pitchDeg, speed, frames, screenshot, !noDialog, wireframe, debugColours, exaggeration, refraction, width, height,
+                outDir));
+    }
+}

@@ -1,0 +1,440 @@
+package dempano.render;
+
+import com.jme3.app.SimpleApplication;
+import com.jme3.font.BitmapText;
+import com.jme3.input.KeyInput;
+import com.jme3.input.controls.ActionListener;
+import com.jme3.input.controls.KeyTrigger;
+import com.jme3.material.Material;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.FastMath;
+import com.jme3.math.Vector3f;
+import com.jme3.post.SceneProcessor;
+import com.jme3.profile.AppProfiler;
+import com.jme3.renderer.RenderManager;
+import com.jme3.renderer.ViewPort;
+import com.jme3.renderer.queue.RenderQueue;
+import com.jme3.scene.Node;
+import com.jme3.system.AppSettings;
+import com.jme3.texture.FrameBuffer;
+import com.jme3.util.BufferUtils;
+import dempano.dem.DemDirectory;
+import dempano.dem.MissingTilePolicy;
+import dempano.dem.Mosaic;
+import dempano.geo.LocalFrame;
+import dempano.geo.Refraction;
+import dempano.geo.Viewpoint;
+import dempano.terrain.TerrainBuilder;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.imageio.ImageIO;
+
+/**
+ * The fly-through: a jME window over the same terrain, earth model and shader as the panoramas, to
+ * look for anomalies in a DEM (voids, spikes, terracing, seams, a wrong altitude at a viewpoint).
+ * The terrain is built once around the start, in its east-north-up frame; the HUD converts the
+ * camera back to geodetic coordinates through that frame. {@link #KEYS} lists the controls.
+ */
+public final class OnscreenRenderer extends SimpleApplication {
+    /** The controls, as the README and the HUD list them. */
+    public static final List<String> KEYS = List.of(
+            "W/S forward/back, A/D left/right, Q/Z up/down, arrows or mouse drag: turn and pitch",
+            "+/- (or PgUp/PgDn): speed ×2 / ÷2",
+            "F1 wireframe, F2 debug colours (filled voids magenta, missing tiles red, tile seams yellow)",
+            "F3 vertical exaggeration 1→2→4→1, F4 earth: curvature+refraction k=0.13 → no refraction → flat (k=1)",
+            "P render the 360° panorama here (offscreen pipeline), K screenshot, Esc quit");
+
+    /**
+     * What to fly over and how.
+     *
+     * @param demDir            tiles (the demo DEM if null)
+     * @param aboveGroundMetres start height above the DEM
+     * @param rangeMetres       terrain built within this distance of the start
+     * @param frames            scripted mode: fly this many frames (1/30 s each) along the heading, then
+     *                          write {@code screenshot} and quit; 0 = interactive
+     * @param outDir            where panoramas and screenshots go
+     */
+    public record Options(Path demDir, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
+                          double headingDeg, double pitchDeg, double speedMetresPerSecond, int frames, Path screenshot,
+                          boolean showSettings, boolean wireframe, boolean debugAids, double exaggeration,
+                          double refractionCoefficient, int widthPx, int heightPx, Path outDir) {
+    }
+
+    private final Options opt;
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    private final java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(1);
+    private Mosaic mosaic;
+    private Viewpoint start;
+    private LocalFrame frame;
+    private Material material;
+    private Node terrain;
+    private BitmapText hud, message;
+    private boolean wireframe, debugAids;
+    private double exaggeration, refractionK;
+    private int frame0;
+    private volatile String status = "";
+    private final ScreenGrabber grabber = new ScreenGrabber();
+    private int shots, panoramas;
+
+    public OnscreenRenderer(Options opt) {
+        super();
+        this.opt = opt;
+        this.wireframe = opt.wireframe();
+        this.debugAids = opt.debugAids();
+        this.exaggeration = opt.exaggeration();
+        this.refractionK = opt.refractionCoefficient();
+    }
+
+    /** Runs the window until it is closed (or the script ends); returns 0, or throws what went wrong. */
+    public static int fly(Options opt) {
+        GlPlatform.configureWindow();
+        OnscreenRenderer app = new OnscreenRenderer(opt);
+        AppSettings s = new AppSettings(true);
+        s.setTitle("dempano fly-through");
+        s.setResolution(opt.widthPx(), opt.heightPx());
+        s.setRenderer(GlPlatform.RENDERER);
+        s.setAudioRenderer(null);
+        s.setVSync(opt.frames() == 0);
+        s.setSamples(0);
+        s.setGammaCorrection(false);
+        app.setSettings(s);
+        app.setShowSettings(opt.showSettings() && opt.frames() == 0);
+        app.setPauseOnLostFocus(false);
+        app.start(); // jME's LWJGL 3 context runs its loop on its own thread
+        try {
+            app.done.await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            app.stop();
+        }
+        Throwable t = app.failure.get();
+        if (t != null) {
+            throw new GlUnavailableException("the fly-through failed: " + t.getMessage() + "; " + GlPlatform.windowHint(), t);
+        }
+        return 0;
+    }
+
+    @Override
+    public void handleError(String errMsg, Throwable t) {
+        // jME would log and exit 0; make the failure reach the caller.
+        failure.compareAndSet(null, new IllegalStateException(errMsg + (t != null ? ": " + t : ""), t));
+        stop();
+        done.countDown();
+    }
+
+    @Override
+    public void destroy() {
+        try {
+            super.destroy();
+        } finally {
+            done.countDown();
+        }
+    }
+
+    @Override
+    public void simpleInitApp() {
+        try {
+            DemDirectory dem = new DemDirectory(opt.demDir());
+            mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.SEA_LEVEL);
+            start = Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres());
+            frame = start.eyeFrame();
+        } catch (RuntimeException e) {
+            failure.set(e);
+            stop();
+            return;
+        }
+        viewPort.setBackgroundColor(new ColorRGBA(OffscreenRenderer.SKY_RGBA[0], OffscreenRenderer.SKY_RGBA[1],
+                OffscreenRenderer.SKY_RGBA[2], 1));
+        cam.setFrustumPerspective(60, (float) settings.getWidth() / settings.getHeight(), 1f, (float) (opt.rangeMetres() * 1.5));
+        cam.setLocation(Vector3f.ZERO);
+        float heading = (float) Math.toRadians(opt.headingDeg()), pitch = (float) Math.toRadians(opt.pitchDeg());
+        Vector3f dir = new Vector3f(FastMath.sin(heading) * FastMath.cos(pitch), FastMath.sin(pitch),
+                -FastMath.cos(heading) * FastMath.cos(pitch));
+        cam.lookAtDirection(dir, Vector3f.UNIT_Y);
+        flyCam.setMoveSpeed((float) opt.speedMetresPerSecond());
+        flyCam.setDragToRotate(true);
+        flyCam.setZoomSpeed(0);
+        flyCam.setEnabled(opt.frames() == 0);
+        buildTerrain();
+        setDisplayStatView(false);
+        setDisplayFps(false);
+        hud = new BitmapText(guiFont);
+        hud.setSize(guiFont.getCharSet().getRenderedSize());
+        hud.setColor(ColorRGBA.White);
+        hud.setLocalTranslation(10, settings.getHeight() - 10, 0);
+        guiNode.attachChild(hud);
+        message = new BitmapText(guiFont);
+        message.setColor(ColorRGBA.Yellow);
+        message.setLocalTranslation(10, 10 + guiFont.getCharSet().getRenderedSize(), 0);
+        guiNode.attachChild(message);
+        BitmapText cross = new BitmapText(guiFont);
+        cross.setText("+");
+        cross.setColor(ColorRGBA.White);
+        cross.setLocalTranslation(settings.getWidth() / 2f - cross.getLineWidth() / 2, settings.getHeight() / 2f + cross.getLineHeight() / 2, 0);
+        guiNode.attachChild(cross);
+        guiViewPort.addProcessor(grabber); // the GUI viewport is drawn last: its frame includes the HUD
+        mapKeys();
+    }
+
+    private void buildTerrain() {
+        if (terrain != null) {
+            terrain.removeFromParent();
+            renderer.cleanup(); // frees the old buffers' GL objects at the next frame
+            TerrainBuilder.destroyBuffers(terrain);
+        }
+        material = new Material(assetManager, "dempano/shaders/Terrain.j3md");
+        material.setFloat("RangeMetres", (float) (opt.rangeMetres() * 2));
+        material.setFloat("HazeMetres", (float) Math.max(20_000, opt.rangeMetres() * 0.6));
+        double sunAz = Math.toRadians(315), sunEl = Math.toRadians(40);
+        material.setVector3("SunDirection", new Vector3f((float) (Math.cos(sunEl) * Math.sin(sunAz)), (float) Math.sin(sunEl),
+                (float) (-Math.cos(sunEl) * Math.cos(sunAz))));
+        material.setBoolean("DebugAids", debugAids);
+        material.getAdditionalRenderState().setWireframe(wireframe);
+        material.getAdditionalRenderState().setFaceCullMode(com.jme3.material.RenderState.FaceCullMode.Off);
+        // Level of detail for the window: its pixels per degree, a one-pixel bound.
+        double ppd = settings.getHeight() / 60.0;
+        terrain = TerrainBuilder.build(mosaic, start, new Refraction(refractionK), opt.rangeMetres(), material, ppd, 1,
+                exaggeration).root();
+        rootNode.attachChild(terrain);
+    }
+
+    private void mapKeys() {
+        inputManager.addMapping("wireframe", new KeyTrigger(KeyInput.KEY_F1));
+        inputManager.addMapping("debug", new KeyTrigger(KeyInput.KEY_F2));
+        inputManager.addMapping("exaggerate", new KeyTrigger(KeyInput.KEY_F3));
+        inputManager.addMapping("earth", new KeyTrigger(KeyInput.KEY_F4));
+        inputManager.addMapping("faster", new KeyTrigger(KeyInput.KEY_EQUALS), new KeyTrigger(KeyInput.KEY_ADD),
+                new KeyTrigger(KeyInput.KEY_PGUP));
+        inputManager.addMapping("slower", new KeyTrigger(KeyInput.KEY_MINUS), new KeyTrigger(KeyInput.KEY_SUBTRACT),
+                new KeyTrigger(KeyInput.KEY_PGDN));
+        inputManager.addMapping("panorama", new KeyTrigger(KeyInput.KEY_P));
+        inputManager.addMapping("screenshot", new KeyTrigger(KeyInput.KEY_K));
+        ActionListener l = (name, pressed, tpf) -> {
+            if (!pressed) {
+                return;
+            }
+            switch (name) {
+                case "wireframe" -> {
+                    wireframe = !wireframe;
+                    material.getAdditionalRenderState().setWireframe(wireframe);
+                }
+                case "debug" -> {
+                    debugAids = !debugAids;
+                    material.setBoolean("DebugAids", debugAids);
+                }
+                case "exaggerate" -> {
+                    exaggeration = exaggeration >= 4 ? 1 : exaggeration * 2;
+                    buildTerrain();
+                }
+                case "earth" -> {
+                    refractionK = refractionK == Refraction.STANDARD.coefficient() ? 0
+                            : refractionK == 0 ? 1 : Refraction.STANDARD.coefficient();
+                    buildTerrain();
+                }
+                case "faster" -> flyCam.setMoveSpeed(flyCam.getMoveSpeed() * 2);
+                case "slower" -> flyCam.setMoveSpeed(Math.max(1, flyCam.getMoveSpeed() / 2));
+                case "panorama" -> renderPanorama();
+                case "screenshot" -> grabber.request(opt.outDir().resolve("fly-" + (++shots) + ".png"));
+                default -> {
+                }
+            }
+        };
+        inputManager.addListener(l, "wireframe", "debug", "exaggerate", "earth", "faster", "slower", "panorama", "screenshot");
+    }
+
+    @Override
+    public void simpleUpdate(float tpf) {
+        if (mosaic == null) {
+            return;
+        }
+        if (opt.frames() > 0) {
+            // Scripted: a fixed step per frame, so that the path does not depend on the machine's speed.
+            cam.setLocation(cam.getLocation().add(cam.getDirection().mult((float) (opt.speedMetresPerSecond() / 30))));
+            frame0++;
+            if (frame0 == opt.frames()) {
+                grabber.request(opt.screenshot());
+            } else if (frame0 > opt.frames() && !grabber.pending()) {
+                stop();
+            }
+        }
+        Vector3f p = cam.getLocation(), d = cam.getDirection();
+        double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
+        double ground = groundUnder(geo[0], geo[1]);
+        double heading = (Math.toDegrees(Math.atan2(d.x, -d.z)) + 360) % 360, pitch = Math.toDegrees(Math.asin(d.y));
+        double[] hit = crosshair(p, d);
+        StringBuilder sb = new StringBuilder();
+        sb.append(String.format(Locale.ROOT, "lat %.5f  lon %.5f%n", geo[0], geo[1]));
+        sb.append(String.format(Locale.ROOT, "altitude %.0f m above sea, %.0f m above ground%n", geo[2], geo[2] - ground));
+        sb.append(String.format(Locale.ROOT, "heading %.1f deg  pitch %.1f deg  speed %.0f m/s%n", heading, pitch,
+                opt.frames() > 0 ? opt.speedMetresPerSecond() : flyCam.getMoveSpeed()));
+        sb.append(hit == null ? "crosshair: sky / beyond range\n" : String.format(Locale.ROOT,
+                "crosshair: DEM %.0f m at %.5f, %.5f, %.2f km away%n", hit[2], hit[0], hit[1], hit[3] / 1000));
+        sb.append(String.format(Locale.ROOT, "exaggeration x%.0f, %s, wireframe %s, debug colours %s",
+                exaggeration, refractionK == 1 ? "flat earth (k = 1)" : "refraction k = " + refractionK,
+                wireframe ? "on" : "off", debugAids ? "on" : "off"));
+        hud.setText(sb.toString());
+        message.setText(status);
+    }
+
+    /** DEM height (m) at a coordinate, NaN outside the mosaic. */
+    private double groundUnder(double latDeg, double lonDeg) {
+        double r = mosaic.rowOf(latDeg), c = mosaic.colOf(lonDeg);
+        if (!(r >= 0 && c >= 0 && r <= mosaic.rows() - 1 && c <= mosaic.cols() - 1)) {
+            return Double.NaN;
+        }
+        return mosaic.heightAt(latDeg, lonDeg);
+    }
+
+    /**
+     * The DEM point under the crosshair: a march along the view ray in the start frame (steps growing
+     * with distance), refined by bisection. Returns {lat, lon, DEM height, distance} or null.
+     * Heights compare as drawn: DEM × exaggeration plus refraction's lift.
+     */
+    double[] crosshair(Vector3f p, Vector3f d) {
+        double prevT = 0;
+        double t = 1;
+        Refraction k = new Refraction(refractionK);
+        while (t < opt.rangeMetres()) {
+            if (below(p, d, t, k)) {
+                double lo = prevT, hi = t;
+                for (int i = 0; i < 40; i++) {
+                    double mid = (lo + hi) / 2;
+                    if (below(p, d, mid, k)) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                double[] g = frame.toGeodetic(p.x + d.x * hi, -(p.z + d.z * hi), p.y + d.y * hi);
+                return new double[] {g[0], g[1], groundUnder(g[0], g[1]), hi};
+            }
+            prevT = t;
+            t = t * 1.01 + 2;
+        }
+        return null;
+    }
+
+    private boolean below(Vector3f p, Vector3f d, double t, Refraction k) {
+        double e = p.x + d.x * t, n = -(p.z + d.z * t), u = p.y + d.y * t;
+        double[] g = frame.toGeodetic(e, n, u);
+        double h = groundUnder(g[0], g[1]);
+        return !Double.isNaN(h) && g[2] <= h * exaggeration + k.liftMetres(Math.hypot(e, n));
+    }
+
+    /** Renders the 360° panorama at the camera in a separate JVM (its own offscreen GL context). */
+    private void renderPanorama() {
+        Vector3f p = cam.getLocation();
+        double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
+        Path prefix = opt.outDir().resolve("fly-panorama-" + (++panoramas));
+        double ground = groundUnder(geo[0], geo[1]);
+        if (Double.isNaN(ground) || geo[2] < ground) {
+            status = "panorama: the camera is " + (Double.isNaN(ground) ? "off the DEM" : "below the terrain");
+            return;
+        }
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx4g",
+                "-cp", System.getProperty("java.class.path"), "dempano.cli.Main", "--dem-dir", opt.demDir().toString(),
+                "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(geo[2]),
+                "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString()));
+        status = "panorama: rendering at " + String.format(Locale.ROOT, "%.5f, %.5f, %.0f m", geo[0], geo[1], geo[2]) + " …";
+        Thread th = new Thread(() -> {
+            try {
+                Files.createDirectories(opt.outDir());
+                Process proc = new ProcessBuilder(cmd).redirectErrorStream(true)
+                        .redirectOutput(opt.outDir().resolve("fly-panorama-" + panoramas + ".log").toFile()).start();
+                int rc = proc.waitFor();
+                status = rc == 0 ? "panorama written: " + prefix + ".png, " + prefix + "-distance.npy"
+                        : "panorama failed (exit " + rc + "): see " + opt.outDir().resolve("fly-panorama-" + panoramas + ".log");
+            } catch (IOException | InterruptedException e) {
+                status = "panorama failed: " + e;
+            }
+            System.err.println("dempano fly: " + status);
+        }, "panorama");
+        th.setDaemon(true);
+        th.start();
+    }
+
+    /** Reads the window's framebuffer after a frame and writes it as PNG, on request. */
+    private final class ScreenGrabber implements SceneProcessor {
+        private volatile Path target;
+        private RenderManager rm;
+
+        void request(Path file) {
+            target = file;
+        }
+
+        boolean pending() {
+            return target != null;
+        }
+
+        @Override
+        public void initialize(RenderManager rm, ViewPort vp) {
+            this.rm = rm;
+        }
+
+        @Override
+        public void reshape(ViewPort vp, int w, int h) {
+        }
+
+        @Override
+        public boolean isInitialized() {
+            return rm != null;
+        }
+
+        @Override
+        public void preFrame(float tpf) {
+        }
+
+        @Override
+        public void postQueue(RenderQueue rq) {
+        }
+
+        @Override
+        public void postFrame(FrameBuffer out) {
+            Path file = target;
+            if (file == null) {
+                return;
+            }
+            int w = settings.getWidth(), h = settings.getHeight();
+            ByteBuffer buf = BufferUtils.createByteBuffer(w * h * 4);
+            rm.getRenderer().readFrameBuffer(null, buf);
+            // RGBA rows from the bottom, as GL reads them.
+            BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    int i = ((h - 1 - y) * w + x) * 4;
+                    img.setRGB(x, y, (buf.get(i) & 0xff) << 16 | (buf.get(i + 1) & 0xff) << 8 | (buf.get(i + 2) & 0xff));
+                }
+            }
+            BufferUtils.destroyDirectBuffer(buf);
+            try {
+                Path parent = file.toAbsolutePath().getParent();
+                if (parent != null) {
+                    Files.createDirectories(parent);
+                }
+                ImageIO.write(img, "png", file.toFile());
+                status = "screenshot written: " + file;
+                System.err.println("dempano fly: " + status);
+                System.out.println("dempano fly HUD: " + hud.getText().replace('\n', '|'));
+            } catch (IOException e) {
+                failure.compareAndSet(null, e);
+                status = "screenshot failed: " + e;
+            }
+            target = null;
+        }
+
+        @Override
+        public void cleanup() {
+        }
+
+        @Override
+        public void setProfiler(AppProfiler profiler) {
+        }
+    }
+}
