@@ -214,6 +214,17 @@ public final class OffscreenRenderer {
         if (!closed) {
             closed = true;
             app.stop(true);
+            // stop(true) returns once the context is marked destroyed, which jME does before its thread
+            // calls glfwTerminate: a context created meanwhile would be terminated under its feet
+            // ("Failed to create display"). Wait for the GL thread itself to end.
+            Thread t = app.glThread;
+            if (t != null && t != Thread.currentThread()) {
+                try {
+                    t.join(TimeUnit.SECONDS.toMillis(START_TIMEOUT_SECONDS));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
         }
     }
 
@@ -237,12 +248,14 @@ public final class OffscreenRenderer {
 
     private static final class GlApp extends LegacyApplication {
         final CompletableFuture<String[]> ready = new CompletableFuture<>();
+        volatile Thread glThread;
         private FrameBuffer fb;
         private int fbWidth, fbHeight;
         private boolean fbReversed;
 
         @Override
         public void initialize() {
+            glThread = Thread.currentThread();
             try {
                 super.initialize();
                 String version = GL11.glGetString(GL11.GL_VERSION);

@@ -82,7 +82,7 @@ class RendererLifecycleTest {
     @Test
     void contextIsCreatedAgainAfterTheLastUserCloses() throws Exception {
         float[] first = null;
-        for (int round = 0; round < 3; round++) {
+        for (int round = 0; round < 6; round++) {
             try (PanoramaRenderer r = PanoramaRenderer.open(RenderGeometryTest.dem(RenderGeometryTest.TERRAIN, 46, 8, 1, 1))) {
                 float[] d = r.render(small()).distanceArray();
                 if (first == null) {
