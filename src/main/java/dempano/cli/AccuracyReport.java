@@ -36,9 +36,13 @@ public final class AccuracyReport {
     }
 
     /** One GL setting. */
-    record Setting(DepthMode mode, double supersampling, int views) {
+    record Setting(DepthMode mode, double supersampling, int views, double lodPx) {
+        Setting(DepthMode mode, double supersampling, int views) {
+            this(mode, supersampling, views, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX);
+        }
+
         String label() {
-            return mode.optionName() + ", ss " + fmt(supersampling) + ", " + views + " views";
+            return mode.optionName() + ", ss " + fmt(supersampling) + ", " + views + " views, LOD " + fmt(lodPx) + " px";
         }
     }
 
@@ -54,7 +58,12 @@ public final class AccuracyReport {
             new Setting(DepthMode.SHADER_RANGE, 0.5, 8),
             new Setting(DepthMode.SHADER_RANGE, 1, 8),
             new Setting(DepthMode.SHADER_RANGE, 1, 12),
-            new Setting(DepthMode.SHADER_RANGE, 2, 8));
+            new Setting(DepthMode.SHADER_RANGE, 2, 8),
+            // The level-of-detail axis (default shader, ss 1, 8 views): full resolution to a coarse bound.
+            new Setting(DepthMode.SHADER_RANGE, 1, 8, 0),
+            new Setting(DepthMode.SHADER_RANGE, 1, 8, 0.25),
+            new Setting(DepthMode.SHADER_RANGE, 1, 8, 1),
+            new Setting(DepthMode.SHADER_RANGE, 1, 8, 2));
 
     private AccuracyReport() {
     }
@@ -101,7 +110,8 @@ public final class AccuracyReport {
             try (PanoramaRenderer gl = PanoramaRenderer.open(scene.dem())) {
                 gl.render(base); // warm-up
                 for (Setting s : SETTINGS) {
-                    PanoramaRequest req = base.withDepthMode(s.mode()).withSupersampling(s.supersampling()).withViews(s.views());
+                    PanoramaRequest req = base.withDepthMode(s.mode()).withSupersampling(s.supersampling()).withViews(s.views())
+                            .withLodErrorPx(s.lodPx());
                     long t = System.nanoTime();
                     Panorama p = gl.render(req);
                     double seconds = (System.nanoTime() - t) / 1e9;
@@ -211,9 +221,13 @@ public final class AccuracyReport {
                 chart.getStyler().setYAxisDecimalPattern("0.#E0");
                 chart.getStyler().setChartBackgroundColor(Color.WHITE);
                 chart.getStyler().setLegendVisible(true);
-                for (DepthMode mode : DepthMode.values()) {
+                for (DepthMode mode : new DepthMode[] {DepthMode.STANDARD_24, DepthMode.REVERSED_32F, DepthMode.SHADER_RANGE, null}) {
                     List<Double> x = new ArrayList<>(), y = new ArrayList<>();
-                    rows.stream().filter(r -> r.scene() == scene && r.setting().mode() == mode && r.setting().views() == 8)
+                    double lodDefault = dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX;
+                    // One curve per depth mode (supersampling varies), and one for the level of detail (null).
+                    rows.stream().filter(r -> r.scene() == scene && r.setting().views() == 8 && (mode == null
+                                    ? r.setting().mode() == DepthMode.SHADER_RANGE && r.setting().supersampling() == 1
+                                    : r.setting().mode() == mode && r.setting().lodPx() == lodDefault))
                             .sorted((a, c) -> Double.compare(a.seconds(), c.seconds()))
                             .forEach(r -> {
                                 x.add(r.seconds());
@@ -221,7 +235,8 @@ public final class AccuracyReport {
                                 y.add(Math.max(v, 1e-9)); // log axis: exact zero drawn at 1e-9
                             });
                     if (!x.isEmpty()) {
-                        chart.addSeries(mode.optionName(), x, y).setMarker(SeriesMarkers.CIRCLE);
+                        chart.addSeries(mode == null ? "shader, LOD 0-2 px" : mode.optionName(), x, y)
+                                .setMarker(SeriesMarkers.CIRCLE);
                     }
                 }
                 charts.add(chart);
