@@ -36,6 +36,8 @@ public final class FlyCommand implements Callable<Integer> {
     int frames;
     @Option(names = "--screenshot", paramLabel = "FILE", description = "Scripted mode's screenshot (PNG).")
     Path screenshot;
+    @Option(names = "--panorama-at-end", description = "Scripted: also render the 360° panorama (key P) at the end and wait for it.")
+    boolean panoramaAtEnd;
     @Option(names = "--no-dialog", description = "Skip jME's settings dialog (resolution, full screen).")
     boolean noDialog;
     @Option(names = "--wireframe", description = "Start in wireframe.")
@@ -72,6 +74,6 @@ public final class FlyCommand implements Callable<Integer> {
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         return OnscreenRenderer.fly(new OnscreenRenderer.Options(dir, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
                 pitchDeg, speed, frames, screenshot, !noDialog, wireframe, debugColours, exaggeration, refraction, width, height,
-                outDir));
+                outDir, panoramaAtEnd));
     }
 }

@@ -60,11 +60,12 @@ public final class OnscreenRenderer extends SimpleApplication {
      * @param frames            scripted mode: fly this many frames (1/30 s each) along the heading, then
      *                          write {@code screenshot} and quit; 0 = interactive
      * @param outDir            where panoramas and screenshots go
+     * @param panoramaAtEnd     scripted mode: also press P at the end and wait for the panorama
      */
     public record Options(Path demDir, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
                           double headingDeg, double pitchDeg, double speedMetresPerSecond, int frames, Path screenshot,
                           boolean showSettings, boolean wireframe, boolean debugAids, double exaggeration,
-                          double refractionCoefficient, int widthPx, int heightPx, Path outDir) {
+                          double refractionCoefficient, int widthPx, int heightPx, Path outDir, boolean panoramaAtEnd) {
     }
 
     private final Options opt;
@@ -82,6 +83,7 @@ public final class OnscreenRenderer extends SimpleApplication {
     private volatile String status = "";
     private final ScreenGrabber grabber = new ScreenGrabber();
     private int shots, panoramas;
+    private volatile Thread panoramaThread;
 
     public OnscreenRenderer(Options opt) {
         super();
@@ -260,7 +262,10 @@ public final class OnscreenRenderer extends SimpleApplication {
             frame0++;
             if (frame0 == opt.frames()) {
                 grabber.request(opt.screenshot());
-            } else if (frame0 > opt.frames() && !grabber.pending()) {
+                if (opt.panoramaAtEnd()) {
+                    renderPanorama();
+                }
+            } else if (frame0 > opt.frames() && !grabber.pending() && (panoramaThread == null || !panoramaThread.isAlive())) {
                 stop();
             }
         }
@@ -358,6 +363,7 @@ public final class OnscreenRenderer extends SimpleApplication {
         }, "panorama");
         th.setDaemon(true);
         th.start();
+        panoramaThread = th;
     }
 
     /** Reads the window's framebuffer after a frame and writes it as PNG, on request. */

@@ -31,7 +31,8 @@ class FlyThroughTest {
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx2g", "-cp",
                 System.getProperty("java.class.path"), "dempano.cli.Main", "fly", "--no-dialog", "--frames", "30",
                 "--screenshot", shot.toString(), "--width", "640", "--height", "400", "--above-ground-m", "300",
-                "--pitch-deg", "-10", "--speed-mps", "300", "--range-km", "30", "--out-dir", tmp.toString()));
+                "--pitch-deg", "-10", "--speed-mps", "300", "--range-km", "30", "--out-dir", tmp.toString(),
+                "--panorama-at-end"));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
         pb.environment().put("DEMPANO_GL", "x11");
         Process p = pb.start();
@@ -77,6 +78,15 @@ class FlyThroughTest {
         assertTrue(aboveGround > 100 && aboveGround < 400, "above ground " + aboveGround);
         assertTrue(out.contains("heading 0.0 deg  pitch -10.0 deg"), out);
         assertTrue(Pattern.compile("crosshair: DEM \\d+ m at").matcher(out).find(), out);
+        // Key P's panorama, rendered through the offscreen pipeline in its own JVM, from where the camera is.
+        assertTrue(out.contains("panorama written: "), out);
+        assertTrue(Files.size(tmp.resolve("fly-panorama-1-distance.npy")) > 7200L * 1200 * 4, "distance map");
+        String json = Files.readString(tmp.resolve("fly-panorama-1.json"));
+        Matcher eye = Pattern.compile("\"eyeAltitudeMetres\"\\s*:\\s*([0-9.]+)").matcher(json);
+        assertTrue(eye.find(), json);
+        Matcher hud = Pattern.compile("altitude (\\d+) m above sea").matcher(out);
+        assertTrue(hud.find());
+        assertEquals(Double.parseDouble(hud.group(1)), Double.parseDouble(eye.group(1)), 1.0, "panorama eye vs HUD altitude");
     }
 
     private static double distance(int rgb, int[] c) {
