@@ -1,7 +1,6 @@
 package dempano;
 
 import com.jme3.material.Material;
-import com.jme3.math.Vector3f;
 import dempano.dem.DemSource;
 import dempano.dem.Mosaic;
 import dempano.geo.Viewpoint;
@@ -96,13 +95,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             return renderReference(req, mosaic, eye, timings, t, progress);
         }
         progress.accept("building terrain mesh");
-        Material material = gl.newTerrainMaterial();
-        material.setFloat("RangeMetres", (float) req.rangeMetres());
-        material.setFloat("HazeMetres", (float) Math.max(20_000, req.rangeMetres() * 0.6));
-        // Sun from the north-west, 40° high (east, up, south axes).
-        double sunAz = Math.toRadians(315), sunEl = Math.toRadians(40);
-        material.setVector3("SunDirection", new Vector3f((float) (Math.cos(sunEl) * Math.sin(sunAz)), (float) Math.sin(sunEl),
-                (float) (-Math.cos(sunEl) * Math.cos(sunAz))));
+        Material material = gl.newTerrainMaterial(req.rangeMetres());
         if (!req.colour()) {
             material.setBoolean("DistanceOnly", true);
         }

@@ -156,8 +156,8 @@ public final class Mosaic {
         for (int r = 0; r <= ipd; r++) {
             for (int c = 0; c <= ipd; c++) {
                 int i = (row0 + r) * cols + col0 + c;
-                flags[i] = (byte) (r % step == 0 && c % step == 0 && t.isFilledVoid(r / step, c / step) ? FLAG_FILLED_VOID
-                        : flags[i] & ~FLAG_FILLED_VOID & ~FLAG_MISSING_TILE);
+                // A present tile's samples win on an edge shared with a missing tile.
+                flags[i] = (byte) (r % step == 0 && c % step == 0 && t.isFilledVoid(r / step, c / step) ? FLAG_FILLED_VOID : 0);
             }
         }
     }

@@ -30,17 +30,17 @@ public final class Stitcher {
     private static void eyeDepth(float d, int i, double[] z, int w, ViewLayout layout, DepthMode mode, double nearMetres,
                                  double farMetres) {
         switch (mode) {
-                case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres);
-                case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
-                case SHADER_RANGE -> {
-                    if (!(d > 0) || Float.isInfinite(d)) {
-                        z[i] = Double.POSITIVE_INFINITY;
-                    } else {
-                        double x = layout.xTanOfPixel(i % w), y = layout.yTanOfPixel(i / w);
-                        z[i] = d / Math.sqrt(1 + x * x + y * y);
-                    }
+            case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres);
+            case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
+            case SHADER_RANGE -> {
+                if (!(d > 0) || Float.isInfinite(d)) {
+                    z[i] = Double.POSITIVE_INFINITY;
+                } else {
+                    double x = layout.xTanOfPixel(i % w), y = layout.yTanOfPixel(i / w);
+                    z[i] = d / Math.sqrt(1 + x * x + y * y);
                 }
-                default -> throw new IllegalStateException();
+            }
+            default -> throw new IllegalStateException();
         }
     }
 

@@ -158,9 +158,9 @@ public final class OffscreenRenderer {
         return app.getAssetManager();
     }
 
-    /** A new terrain material (see {@code dempano/shaders/Terrain.j3md}). */
-    public Material newTerrainMaterial() {
-        return new Material(app.getAssetManager(), "dempano/shaders/Terrain.j3md");
+    /** A new terrain material for a range of sight (see {@link TerrainMaterial}). */
+    public Material newTerrainMaterial(double rangeMetres) {
+        return TerrainMaterial.create(app.getAssetManager(), rangeMetres);
     }
 
     /**

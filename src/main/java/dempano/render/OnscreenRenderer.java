@@ -79,7 +79,7 @@ public final class OnscreenRenderer extends SimpleApplication {
     private BitmapText hud, message;
     private boolean wireframe, debugAids;
     private double exaggeration, refractionK;
-    private int frame0;
+    private int scriptedFrame;
     private volatile String status = "";
     private final ScreenGrabber grabber = new ScreenGrabber();
     private int shots, panoramas;
@@ -191,12 +191,7 @@ public final class OnscreenRenderer extends SimpleApplication {
             renderer.cleanup(); // frees the old buffers' GL objects at the next frame
             TerrainBuilder.destroyBuffers(terrain);
         }
-        material = new Material(assetManager, "dempano/shaders/Terrain.j3md");
-        material.setFloat("RangeMetres", (float) (opt.rangeMetres() * 2));
-        material.setFloat("HazeMetres", (float) Math.max(20_000, opt.rangeMetres() * 0.6));
-        double sunAz = Math.toRadians(315), sunEl = Math.toRadians(40);
-        material.setVector3("SunDirection", new Vector3f((float) (Math.cos(sunEl) * Math.sin(sunAz)), (float) Math.sin(sunEl),
-                (float) (-Math.cos(sunEl) * Math.cos(sunAz))));
+        material = TerrainMaterial.create(assetManager, opt.rangeMetres());
         material.setBoolean("DebugAids", debugAids);
         material.getAdditionalRenderState().setWireframe(wireframe);
         material.getAdditionalRenderState().setFaceCullMode(com.jme3.material.RenderState.FaceCullMode.Off);
@@ -259,13 +254,13 @@ public final class OnscreenRenderer extends SimpleApplication {
         if (opt.frames() > 0) {
             // Scripted: a fixed step per frame, so that the path does not depend on the machine's speed.
             cam.setLocation(cam.getLocation().add(cam.getDirection().mult((float) (opt.speedMetresPerSecond() / 30))));
-            frame0++;
-            if (frame0 == opt.frames()) {
+            scriptedFrame++;
+            if (scriptedFrame == opt.frames()) {
                 grabber.request(opt.screenshot());
                 if (opt.panoramaAtEnd()) {
                     renderPanorama();
                 }
-            } else if (frame0 > opt.frames() && !grabber.pending() && (panoramaThread == null || !panoramaThread.isAlive())) {
+            } else if (scriptedFrame > opt.frames() && !grabber.pending() && (panoramaThread == null || !panoramaThread.isAlive())) {
                 stop();
             }
         }

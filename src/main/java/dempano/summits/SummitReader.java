@@ -54,54 +54,58 @@ public final class SummitReader {
 
     /** de Ferranti's text format. */
     public static SummitList ferranti(String source, String text, boolean lenient) {
-        List<Summit> out = new ArrayList<>();
-        List<String> skipped = new ArrayList<>();
-        String[] lines = text.split("\r?\n", -1);
-        for (int i = 0; i < lines.length; i++) {
-            String line = lines[i].strip();
-            if (line.isEmpty() || line.startsWith("#")) {
-                continue;
+        return eachLine(source, text, lenient, (line, first) -> {
+            String[] f = line.split("\\s+", 7);
+            if (f.length < 7) {
+                throw new IllegalArgumentException("expected 'lon lat elevation code code code NAME', got " + f.length + " fields");
             }
-            try {
-                String[] f = line.split("\\s+", 7);
-                if (f.length < 7) {
-                    throw new IllegalArgumentException("expected 'lon lat elevation code code code NAME', got " + f.length + " fields");
-                }
-                double lon = dms(f[0], "longitude"), lat = dms(f[1], "latitude");
-                double ele = number(f[2], "elevation");
-                out.add(new Summit(f[6].replaceAll("\\s+", " "), lat, lon, ele));
-            } catch (IllegalArgumentException e) {
-                fail(source, i + 1, e.getMessage(), lenient, skipped);
-            }
-        }
-        return new SummitList(source, out, skipped);
+            double lon = dms(f[0], "longitude"), lat = dms(f[1], "latitude");
+            double ele = number(f[2], "elevation");
+            return new Summit(f[6].replaceAll("\\s+", " "), lat, lon, ele);
+        });
     }
 
     /** CSV: name,lat,lon,elevation. */
     public static SummitList csv(String source, String text, boolean lenient) {
+        return eachLine(source, text, lenient, (line, first) -> {
+            List<String> f = csvFields(line);
+            if (first && f.size() >= 3 && f.get(1).trim().equalsIgnoreCase("lat")) {
+                return null; // header
+            }
+            if (f.size() != 4) {
+                throw new IllegalArgumentException("expected 4 fields name,lat,lon,elevation, got " + f.size());
+            }
+            String ele = f.get(3).trim();
+            return new Summit(f.get(0).trim(), number(f.get(1), "latitude"), number(f.get(2), "longitude"),
+                    ele.isEmpty() ? Double.NaN : number(ele, "elevation"));
+        });
+    }
+
+    /** Parses one non-blank, non-comment line; null skips it silently (a header). */
+    private interface LineParser {
+        Summit parse(String line, boolean firstContentLine);
+    }
+
+    /** The line loop of the text formats: blank lines and # comments skipped, bad lines reported by number. */
+    private static SummitList eachLine(String source, String text, boolean lenient, LineParser parser) {
         List<Summit> out = new ArrayList<>();
         List<String> skipped = new ArrayList<>();
         String[] lines = text.split("\r?\n", -1);
+        boolean first = true;
         for (int i = 0; i < lines.length; i++) {
             String line = lines[i].strip();
             if (line.isEmpty() || line.startsWith("#")) {
                 continue;
             }
             try {
-                List<String> f = csvFields(line);
-                if (out.isEmpty() && skipped.isEmpty() && i == firstContentLine(lines)
-                        && f.size() >= 3 && f.get(1).trim().equalsIgnoreCase("lat")) {
-                    continue; // header
+                Summit s = parser.parse(line, first);
+                if (s != null) {
+                    out.add(s);
                 }
-                if (f.size() != 4) {
-                    throw new IllegalArgumentException("expected 4 fields name,lat,lon,elevation, got " + f.size());
-                }
-                String ele = f.get(3).trim();
-                out.add(new Summit(f.get(0).trim(), number(f.get(1), "latitude"), number(f.get(2), "longitude"),
-                        ele.isEmpty() ? Double.NaN : number(ele, "elevation")));
             } catch (IllegalArgumentException e) {
                 fail(source, i + 1, e.getMessage(), lenient, skipped);
             }
+            first = false;
         }
         return new SummitList(source, out, skipped);
     }
@@ -146,16 +150,6 @@ public final class SummitReader {
 
     private static String str(JsonElement e) {
         return e == null || e.isJsonNull() ? null : e.getAsString();
-    }
-
-    private static int firstContentLine(String[] lines) {
-        for (int i = 0; i < lines.length; i++) {
-            String l = lines[i].strip();
-            if (!l.isEmpty() && !l.startsWith("#")) {
-                return i;
-            }
-        }
-        return -1;
     }
 
     private static void fail(String source, int line, String problem, boolean lenient, List<String> skipped) {
