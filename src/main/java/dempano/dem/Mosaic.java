@@ -1,7 +1,6 @@
 package dempano.dem;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
@@ -12,6 +11,13 @@ import java.util.Locale;
  * western edge; the spacing is 1/{@link #intervalsPerDegree()} degree in both directions.
  * Samples of tiles the range circle does not touch are {@code NaN} (not loaded); missing tiles are
  * sea level (0 m) under {@link MissingTilePolicy#SEA_LEVEL}. Immutable.
+ *
+ * <p>The grid is a view on the tiles, not a copy: each sample is read from the tile that holds it,
+ * so a block of 7×9 SRTM1 tiles of which most are sea costs the memory of its present tiles only,
+ * and building a mosaic from cached tiles costs nothing. On an edge shared by two present tiles the
+ * southern (eastern) tile's sample is used; a present tile's sample wins over a missing
+ * neighbour's sea level. A tile coarser than the grid (SRTM3 beside SRTM1) is interpolated
+ * bilinearly onto it.
  *
  * <p>Longitudes are unwrapped: a block crossing the antimeridian has {@link #lonWestDeg()} + width
  * beyond 180, and {@link #heightAt} accepts longitudes either way.
@@ -24,21 +30,24 @@ public final class Mosaic {
     private final int intervalsPerDegree;
     private final int rows;
     private final int cols;
-    private final float[] heights;
+    /** Block tiles, row 0 north; null where missing or not touched. */
+    private final HgtTile[][] tiles;
+    /** Per block tile: held as sea level (missing). Null and not sea level = not loaded (NaN). */
+    private final boolean[][] seaLevel;
     private final List<TileId> tilesUsed;
     private final List<TileId> tilesMissing;
     private final List<String> warnings;
 
-    /** Per sample: {@link #FLAG_FILLED_VOID}, {@link #FLAG_MISSING_TILE} (null when none is set). */
-    private final byte[] flags;
     /** A sample whose height was interpolated over a void. */
     public static final int FLAG_FILLED_VOID = 1;
     /** A sample of a missing tile (sea level stands in). */
     public static final int FLAG_MISSING_TILE = 2;
 
-    private Mosaic(TileSelection sel, int intervalsPerDegree, float[] heights, List<TileId> used,
-                   List<TileId> missing, List<String> warnings, byte[] flags) {
-        this.flags = flags;
+    // locate() results that are no tile sample.
+    private static final long NOT_LOADED = -1, SEA_LEVEL = -2;
+
+    private Mosaic(TileSelection sel, int intervalsPerDegree, HgtTile[][] tiles, boolean[][] seaLevel, List<TileId> used,
+                   List<TileId> missing, List<String> warnings) {
         this.latSouthDeg = sel.latSouthDeg();
         this.lonWestDeg = sel.lonWestDeg();
         this.tilesNorthSouth = sel.tilesNorthSouth();
@@ -46,7 +55,8 @@ public final class Mosaic {
         this.intervalsPerDegree = intervalsPerDegree;
         this.rows = tilesNorthSouth * intervalsPerDegree + 1;
         this.cols = tilesEastWest * intervalsPerDegree + 1;
-        this.heights = heights;
+        this.tiles = tiles;
+        this.seaLevel = seaLevel;
         this.tilesUsed = Collections.unmodifiableList(used);
         this.tilesMissing = Collections.unmodifiableList(missing);
         this.warnings = Collections.unmodifiableList(warnings);
@@ -70,6 +80,7 @@ public final class Mosaic {
         List<TileId> missing = new ArrayList<>();
         List<String> warnings = new ArrayList<>();
         HgtTile[][] tiles = new HgtTile[sel.tilesNorthSouth()][sel.tilesEastWest()];
+        boolean[][] seaLevel = new boolean[sel.tilesNorthSouth()][sel.tilesEastWest()];
         int ipd = 0;
         for (int r = 0; r < sel.tilesNorthSouth(); r++) {
             for (int c = 0; c < sel.tilesEastWest(); c++) {
@@ -88,17 +99,16 @@ public final class Mosaic {
                                 + source.describe() + " has no usable file for it");
                     }
                     missing.add(id);
+                    seaLevel[r][c] = true;
                     continue;
                 }
                 VoidReport v = t.voids();
-                if (v.voidCells() > 0) {
-                    String msg = String.format(Locale.ROOT,
-                            "%s: %d void samples (%.2f %%) filled by interpolation; largest void region %d samples, %d samples across",
+                if (v.voidCells() > 0 && v.hasLargeRegion()) {
+                    warnings.add(String.format(Locale.ROOT,
+                            "%s: %d void samples (%.2f %%) filled by interpolation; largest void region %d samples, "
+                                    + "%d samples across (heights there are invented)",
                             id, v.voidCells(), 100.0 * v.voidCells() / (t.samplesPerSide() * (double) t.samplesPerSide()),
-                            v.largestRegionCells(), v.largestRegionSpanSamples());
-                    if (v.hasLargeRegion()) {
-                        warnings.add(msg + " (heights there are invented)");
-                    }
+                            v.largestRegionCells(), v.largestRegionSpanSamples()));
                 }
                 tiles[r][c] = t;
                 used.add(id);
@@ -111,85 +121,83 @@ public final class Mosaic {
         if (ipd == 0) {
             ipd = HgtTile.SRTM3_SAMPLES - 1; // only sea: keep SRTM3 spacing
         }
-        int rows = sel.tilesNorthSouth() * ipd + 1, cols = sel.tilesEastWest() * ipd + 1;
-        if ((long) rows * cols > Integer.MAX_VALUE - 8) {
+        long rows = (long) sel.tilesNorthSouth() * ipd + 1, cols = (long) sel.tilesEastWest() * ipd + 1;
+        if (rows * cols > Integer.MAX_VALUE - 8) {
             throw new IllegalArgumentException("a mosaic of " + sel.tilesNorthSouth() + "×" + sel.tilesEastWest()
                     + " tiles at " + ipd + " samples per degree is too large; reduce the range");
         }
-        float[] h = new float[rows * cols];
-        Arrays.fill(h, Float.NaN);
-        boolean anyFlag = !missing.isEmpty();
-        for (HgtTile[] row : tiles) {
-            for (HgtTile t : row) {
-                anyFlag |= t != null && t.voids().voidCells() > 0;
-            }
-        }
-        byte[] flags = anyFlag ? new byte[rows * cols] : null;
-        // Missing tiles first, so that a present neighbour's values win on the shared edge.
-        for (int r = 0; r < sel.tilesNorthSouth(); r++) {
-            for (int c = 0; c < sel.tilesEastWest(); c++) {
-                if (sel.touched()[r][c] && tiles[r][c] == null) {
-                    fillBlock(h, cols, r * ipd, c * ipd, ipd, 0f);
-                    for (int i = 0; i <= ipd; i++) {
-                        Arrays.fill(flags, (r * ipd + i) * cols + c * ipd, (r * ipd + i) * cols + c * ipd + ipd + 1,
-                                (byte) FLAG_MISSING_TILE);
-                    }
-                }
-            }
-        }
-        for (int r = 0; r < sel.tilesNorthSouth(); r++) {
-            for (int c = 0; c < sel.tilesEastWest(); c++) {
-                HgtTile t = tiles[r][c];
-                if (t != null) {
-                    copyTile(h, cols, r * ipd, c * ipd, ipd, t);
-                    if (flags != null) {
-                        markVoids(flags, cols, r * ipd, c * ipd, ipd, t);
-                    }
-                }
-            }
-        }
-        return new Mosaic(sel, ipd, h, used, missing, warnings, flags);
+        return new Mosaic(sel, ipd, tiles, seaLevel, used, missing, warnings);
     }
 
-    private static void markVoids(byte[] flags, int cols, int row0, int col0, int ipd, HgtTile t) {
-        int step = ipd / t.intervalsPerDegree(); // a coarser tile beside finer ones: its samples on the finer grid
-        for (int r = 0; r <= ipd; r++) {
-            for (int c = 0; c <= ipd; c++) {
-                int i = (row0 + r) * cols + col0 + c;
-                // A present tile's samples win on an edge shared with a missing tile.
-                flags[i] = (byte) (r % step == 0 && c % step == 0 && t.isFilledVoid(r / step, c / step) ? FLAG_FILLED_VOID : 0);
-            }
+    /**
+     * Which tile holds grid sample (row, col): packed block tile row/column and the sample's row and
+     * column in grid units inside that tile, or {@link #SEA_LEVEL} / {@link #NOT_LOADED}.
+     */
+    private long locate(int row, int col) {
+        int n = intervalsPerDegree;
+        if (row < 0 || col < 0 || row >= rows || col >= cols) {
+            throw new IndexOutOfBoundsException("sample (" + row + ", " + col + ") outside the " + rows + "×" + cols + " mosaic");
         }
+        int tr = Math.min(row / n, tilesNorthSouth - 1), tc = Math.min(col / n, tilesEastWest - 1);
+        int lr = row - tr * n, lc = col - tc * n;
+        if (tiles[tr][tc] != null) {
+            return pack(tr, tc, lr, lc);
+        }
+        boolean north = lr == 0 && tr > 0, west = lc == 0 && tc > 0;
+        if (north && tiles[tr - 1][tc] != null) {
+            return pack(tr - 1, tc, n, lc);
+        }
+        if (west && tiles[tr][tc - 1] != null) {
+            return pack(tr, tc - 1, lr, n);
+        }
+        if (north && west && tiles[tr - 1][tc - 1] != null) {
+            return pack(tr - 1, tc - 1, n, n);
+        }
+        if (seaLevel[tr][tc] || north && seaLevel[tr - 1][tc] || west && seaLevel[tr][tc - 1]
+                || north && west && seaLevel[tr - 1][tc - 1]) {
+            return SEA_LEVEL;
+        }
+        return NOT_LOADED;
     }
 
-    /** Debug flags of a sample ({@link #FLAG_FILLED_VOID}, {@link #FLAG_MISSING_TILE}); 0 for a plain sample. */
+    private static long pack(int tileRow, int tileCol, int localRow, int localCol) {
+        return ((long) tileRow << 52) | ((long) tileCol << 40) | ((long) localRow << 20) | localCol;
+    }
+
+    /** Height of a sample, metres; NaN where the range circle did not need the tile. */
+    public float sample(int row, int col) {
+        long at = locate(row, col);
+        if (at < 0) {
+            return at == SEA_LEVEL ? 0f : Float.NaN;
+        }
+        HgtTile t = tiles[(int) (at >>> 52)][(int) (at >>> 40) & 0xfff];
+        int lr = (int) (at >>> 20) & 0xfffff, lc = (int) at & 0xfffff;
+        int tn = t.intervalsPerDegree(), n = intervalsPerDegree;
+        if (tn == n) {
+            return t.heightMetres(lr, lc);
+        }
+        // A coarser tile beside finer ones: bilinear on its own grid.
+        double r = (double) lr * tn / n, c = (double) lc * tn / n;
+        int r0 = Math.min(tn - 1, (int) r), c0 = Math.min(tn - 1, (int) c);
+        double fr = r - r0, fc = c - c0;
+        return (float) ((1 - fr) * ((1 - fc) * t.heightMetres(r0, c0) + fc * t.heightMetres(r0, c0 + 1))
+                + fr * ((1 - fc) * t.heightMetres(r0 + 1, c0) + fc * t.heightMetres(r0 + 1, c0 + 1)));
+    }
+
+    /**
+     * Debug flags of a sample ({@link #FLAG_FILLED_VOID}, {@link #FLAG_MISSING_TILE}); 0 for a plain
+     * sample and for one not loaded.
+     */
     public int flags(int row, int col) {
-        return flags == null ? 0 : flags[row * cols + col];
-    }
-
-    private static void fillBlock(float[] h, int cols, int row0, int col0, int ipd, float value) {
-        for (int r = 0; r <= ipd; r++) {
-            Arrays.fill(h, (row0 + r) * cols + col0, (row0 + r) * cols + col0 + ipd + 1, value);
+        long at = locate(row, col);
+        if (at < 0) {
+            return at == SEA_LEVEL ? FLAG_MISSING_TILE : 0;
         }
-    }
-
-    private static void copyTile(float[] h, int cols, int row0, int col0, int ipd, HgtTile t) {
-        if (t.intervalsPerDegree() == ipd) {
-            for (int r = 0; r <= ipd; r++) {
-                for (int c = 0; c <= ipd; c++) {
-                    h[(row0 + r) * cols + col0 + c] = t.heightMetres(r, c);
-                }
-            }
-            return;
-        }
-        // A coarser tile beside finer ones: resample bilinearly onto the finer grid.
-        int latS = t.id().latSouthDeg(), lonW = t.id().lonWestDeg();
-        for (int r = 0; r <= ipd; r++) {
-            double lat = latS + 1 - (double) r / ipd;
-            for (int c = 0; c <= ipd; c++) {
-                h[(row0 + r) * cols + col0 + c] = (float) t.heightAt(lat, lonW + (double) c / ipd);
-            }
-        }
+        HgtTile t = tiles[(int) (at >>> 52)][(int) (at >>> 40) & 0xfff];
+        long lr = (at >>> 20) & 0xfffff, lc = at & 0xfffff;
+        int tn = t.intervalsPerDegree(), n = intervalsPerDegree;
+        boolean onTileGrid = lr * tn % n == 0 && lc * tn % n == 0;
+        return onTileGrid && t.isFilledVoid((int) (lr * tn / n), (int) (lc * tn / n)) ? FLAG_FILLED_VOID : 0;
     }
 
     /** Southern edge of the block, degrees. */
@@ -247,11 +255,6 @@ public final class Mosaic {
     public double colOf(double lonDeg) {
         double unwrapped = lonWestDeg + (((lonDeg - lonWestDeg) % 360) + 360) % 360;
         return (unwrapped - lonWestDeg) * intervalsPerDegree;
-    }
-
-    /** Height of a sample, metres; NaN where the range circle did not need the tile. */
-    public float sample(int row, int col) {
-        return heights[row * cols + col];
     }
 
     /**

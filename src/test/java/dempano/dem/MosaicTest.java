@@ -123,6 +123,36 @@ class MosaicTest {
     }
 
     @Test
+    void samplesAndFlagsOfPresentMissingAndUnloadedTilesAndTheirSharedEdges() {
+        // Block 2×2 (row 0 north): NW present with one void, NE present, SW missing, SE not touched.
+        float[] nw = new float[N * N];
+        java.util.Arrays.fill(nw, 300);
+        nw[60 * N + 60] = Float.NaN; // a void, filled from its neighbours
+        DemSource dem = new InMemoryDem("four", List.of(HgtTile.of(new TileId(47, 8), N, nw, "nw"),
+                tile(47, 9, (la, lo) -> 500)));
+        Mosaic m = Mosaic.of(dem, new TileSelection(46, 8, 2, 2, new boolean[][] {{true, true}, {true, false}}),
+                MissingTilePolicy.SEA_LEVEL);
+        assertEquals(List.of(new TileId(46, 8)), m.tilesMissing());
+        // {row, col, height (NaN = not loaded), flags}
+        double[][] cases = {
+                {60, 60, 300, Mosaic.FLAG_FILLED_VOID}, {60, 61, 300, 0},
+                {0, 120, 500, 0},     // NW|NE edge: the eastern tile's sample
+                {120, 60, 300, 0},    // NW over missing SW: the present tile wins
+                {121, 60, 0, Mosaic.FLAG_MISSING_TILE}, {240, 120, 0, Mosaic.FLAG_MISSING_TILE},
+                {120, 120, 500, 0},   // corner of all four: NE is present
+                {121, 120, 0, Mosaic.FLAG_MISSING_TILE}, // SW|SE edge: missing beats not loaded
+                {121, 121, Double.NaN, 0}, {240, 240, Double.NaN, 0},
+                {120, 121, 500, 0},   // NE over the unloaded SE
+        };
+        for (double[] c : cases) {
+            int r = (int) c[0], col = (int) c[1];
+            assertEquals((float) c[2], m.sample(r, col), 1e-4, "height at " + r + ", " + col);
+            assertEquals((int) c[3], m.flags(r, col), "flags at " + r + ", " + col);
+        }
+        assertThrows(IndexOutOfBoundsException.class, () -> m.sample(241, 0));
+    }
+
+    @Test
     void badCoordinatesAreClearErrors() {
         DemSource dem = new InMemoryDem("none", List.of());
         for (double[] ll : new double[][] {{Double.NaN, 8}, {46, Double.NaN}, {91, 8}, {46, 181}, {-90.5, 0}}) {
