@@ -14,6 +14,7 @@ import dempano.panorama.Stitcher;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
 import dempano.render.OffscreenRenderer;
+import dempano.terrain.DeviationCache;
 import dempano.terrain.TerrainBuilder;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -38,6 +39,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     private final DemSource dem;
     private final OffscreenRenderer.Handle handle;
     private final OffscreenRenderer gl;
+    /** Patch deviations of this DEM source, kept across renders (level of detail costs a lookup then). */
+    private final DeviationCache deviations = new DeviationCache();
 
     private PanoramaRenderer(DemSource dem, OffscreenRenderer.Handle handle) {
         this.dem = dem;
@@ -100,7 +103,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             material.setBoolean("DistanceOnly", true);
         }
         TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
-                req.pixelsPerDegree(), req.lodErrorPx());
+                req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations);
         t = lap(timings, "mesh", t);
 
         ElevationRange er = req.elevationRange();

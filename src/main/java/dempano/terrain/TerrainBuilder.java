@@ -80,6 +80,15 @@ public final class TerrainBuilder {
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx, double exaggeration) {
+        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, null);
+    }
+
+    /**
+     * As above, taking patch deviations from {@code cache} where it has them and adding those it
+     * lacks (null = no cache). The cache must belong to the DEM source the mosaic came from.
+     */
+    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
+                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache) {
         LocalFrame frame = eye.eyeFrame();
         double[] eyeFoot = new double[3];
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
@@ -94,22 +103,28 @@ public final class TerrainBuilder {
         int c0 = Math.max(0, (int) Math.floor(eyeCol - rangeMetres / metresPerCol * 1.05 - 2));
         int c1 = Math.min(mosaic.cols() - 1, (int) Math.ceil(eyeCol + rangeMetres / metresPerCol * 1.05 + 2));
 
-        int nr = r1 - r0 + 1, nc = c1 - c0 + 1;
+        // Patches on a grid aligned to whole multiples of the patch size from 90°N, 180°W, so that a
+        // patch is the same whatever the viewpoint (its deviations can be cached). The window grows
+        // to whole patches; rows and columns beyond the mosaic repeat its edge (degenerate cells).
+        int p = PATCH_INTERVALS;
+        long globalRow0 = (long) (90 - mosaic.latNorthDeg()) * mosaic.intervalsPerDegree();
+        long globalCol0 = (long) Math.floorMod(mosaic.lonWestDeg() + 180, 360) * mosaic.intervalsPerDegree();
+        r0 -= (int) Math.floorMod(globalRow0 + r0, p);
+        c0 -= (int) Math.floorMod(globalCol0 + c0, p);
+        int nr = r1 - r0 + 1 + p, nc = c1 - c0 + 1 + p;
         double[] sinLat = new double[nr], cosLat = new double[nr], sinLon = new double[nc], cosLon = new double[nc];
         for (int r = 0; r < nr; r++) {
-            double phi = Math.toRadians(mosaic.latOfRow(r0 + r));
+            double phi = Math.toRadians(mosaic.latOfRow(Math.max(0, Math.min(mosaic.rows() - 1, r0 + r))));
             sinLat[r] = Math.sin(phi);
             cosLat[r] = Math.cos(phi);
         }
         for (int c = 0; c < nc; c++) {
-            double lam = Math.toRadians(mosaic.lonOfCol(c0 + c));
+            double lam = Math.toRadians(mosaic.lonOfCol(Math.max(0, Math.min(mosaic.cols() - 1, c0 + c))));
             sinLon[c] = Math.sin(lam);
             cosLon[c] = Math.cos(lam);
         }
         Placer placer = new Placer(mosaic, frame, eyeFoot, refraction, r0, c0, sinLat, cosLat, sinLon, cosLon, exaggeration);
 
-        // Patches on a grid aligned to the window's corner.
-        int p = PATCH_INTERVALS;
         List<PatchWork> candidates = new ArrayList<>();
         for (int pr = r0; pr < r1; pr += p) {
             for (int pc = c0; pc < c1; pc += p) {
@@ -132,18 +147,12 @@ public final class TerrainBuilder {
                 w.nearestMetres = Double.NaN; // beyond range: dropped
                 return;
             }
-            w.heights = new float[(p + 1) * (p + 1)];
-            for (int a = 0; a <= p; a++) {
-                int r = Math.min(w.row0 + a, mosaic.rows() - 1);
-                for (int b = 0; b <= p; b++) {
-                    float h = mosaic.sample(r, Math.min(w.col0 + b, mosaic.cols() - 1));
-                    w.heights[a * (p + 1) + b] = Float.isNaN(h) ? 0f : h; // NaN only beyond range
-                }
-            }
-            w.deviations = LevelOfDetail.deviationsMetres(w.heights, p + 1, 0, 0, p);
+            float[] raw = rawDeviations(mosaic, w.row0, w.col0, globalRow0, globalCol0, cache);
+            w.deviations = new double[raw.length];
             // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
-            for (int level = 1; level < w.deviations.length; level++) {
-                w.deviations[level] += LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
+            for (int level = 1; level < raw.length; level++) {
+                w.deviations[level] = raw[level]
+                        + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
             w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
         });
@@ -167,7 +176,6 @@ public final class TerrainBuilder {
             }
             double skirt = w.errorMetres() + neighbours;
             w.mesh = placer.mesh(w, skirt > 0 ? skirt + 0.5 : 0);
-            w.heights = null;
         });
 
         Node root = new Node("terrain");
@@ -195,6 +203,41 @@ public final class TerrainBuilder {
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel);
     }
 
+    /**
+     * A patch's deviations per level, metres (rounded up to float), from the cache or measured on the
+     * mosaic (and then cached, unless the patch reaches beyond the mosaic or into unloaded tiles,
+     * whose heights depend on the viewpoint).
+     */
+    private static float[] rawDeviations(Mosaic mosaic, int row0, int col0, long globalRow0, long globalCol0,
+                                         DeviationCache cache) {
+        int p = PATCH_INTERVALS;
+        DeviationCache.Key key = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + row0,
+                Math.floorMod(globalCol0 + col0, 360L * mosaic.intervalsPerDegree()));
+        float[] cached = cache == null ? null : cache.get(key);
+        if (cached != null) {
+            return cached;
+        }
+        boolean cacheable = row0 >= 0 && col0 >= 0 && row0 + p < mosaic.rows() && col0 + p < mosaic.cols();
+        float[] heights = new float[(p + 1) * (p + 1)];
+        for (int a = 0; a <= p; a++) {
+            int r = Math.max(0, Math.min(row0 + a, mosaic.rows() - 1));
+            for (int b = 0; b <= p; b++) {
+                float h = mosaic.sample(r, Math.max(0, Math.min(col0 + b, mosaic.cols() - 1)));
+                cacheable &= !Float.isNaN(h);
+                heights[a * (p + 1) + b] = Float.isNaN(h) ? 0f : h; // NaN only beyond range
+            }
+        }
+        double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
+        float[] raw = new float[dev.length];
+        for (int l = 0; l < dev.length; l++) {
+            raw[l] = (float) dev[l] < dev[l] ? Math.nextUp((float) dev[l]) : (float) dev[l];
+        }
+        if (cacheable && cache != null) {
+            cache.put(key, raw);
+        }
+        return raw;
+    }
+
     private static long key(int row, int col) {
         return ((long) row << 32) ^ (col & 0xffffffffL);
     }
@@ -202,7 +245,6 @@ public final class TerrainBuilder {
     /** A patch on its way from heights to mesh. */
     private static final class PatchWork {
         int row0, col0, level;
-        float[] heights;
         double nearestMetres;
         double[] deviations;
         Mesh mesh;
@@ -281,10 +323,11 @@ public final class TerrainBuilder {
             float[] positions = new float[n * 3], normals = new float[n * 3], elevations = new float[n * 2];
             double[] foot = new double[3], enu = new double[3];
             for (int gi = 0; gi < cs; gi++) {
-                int r = Math.min(w.row0 + gi * step, mosaic.rows() - 1);
+                int r = Math.max(0, Math.min(w.row0 + gi * step, mosaic.rows() - 1));
                 for (int gj = 0; gj < cs; gj++) {
-                    int c = Math.min(w.col0 + gj * step, mosaic.cols() - 1), k = gi * cs + gj;
-                    float h = w.heights[gi * step * (p + 1) + gj * step];
+                    int c = Math.max(0, Math.min(w.col0 + gj * step, mosaic.cols() - 1)), k = gi * cs + gj;
+                    float h = mosaic.sample(r, c);
+                    h = Float.isNaN(h) ? 0f : h; // NaN only beyond range
                     position(r, c, h * exaggeration, 0, foot, enu, positions, 3 * k);
                     elevations[2 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
@@ -352,7 +395,8 @@ public final class TerrainBuilder {
                 int base = cs * cs;
                 for (int e = 0; e <= edge; e++) {
                     int v = ring[e], gi = v / cs, gj = v % cs, twin = base + e;
-                    int r = Math.min(w.row0 + gi * step, mosaic.rows() - 1), c = Math.min(w.col0 + gj * step, mosaic.cols() - 1);
+                    int r = Math.max(0, Math.min(w.row0 + gi * step, mosaic.rows() - 1));
+                    int c = Math.max(0, Math.min(w.col0 + gj * step, mosaic.cols() - 1));
                     position(r, c, elevations[2 * v] * exaggeration, skirtMetres, foot, enu, positions, 3 * twin);
                     System.arraycopy(normals, 3 * v, normals, 3 * twin, 3);
                     elevations[2 * twin] = elevations[2 * v];

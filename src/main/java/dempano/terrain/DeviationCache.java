@@ -1,0 +1,57 @@
+package dempano.terrain;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * Per-patch deviations ({@link LevelOfDetail#deviationsMetres}) kept across renders, so that a
+ * pipeline rendering many viewpoints of one area measures each patch of the DEM once. Patches lie
+ * on a grid aligned to whole multiples of {@link TerrainBuilder#PATCH_INTERVALS} samples from 90°N
+ * and 180°W, so the same patch has the same key whatever the viewpoint. Valid for one DEM source
+ * only (the key holds no tile contents). Bounded (least recently used entries go first) and
+ * thread-safe.
+ */
+public final class DeviationCache {
+    /** Default capacity, patches: a 5×5 block of SRTM1 tiles is about 80 000 (a few MB each 10 000). */
+    public static final int DEFAULT_PATCHES = 400_000;
+
+    private final Map<Key, float[]> map;
+
+    /** Key of a patch: grid intervals per degree and its north-west sample counted from 90°N, 180°W. */
+    record Key(int intervalsPerDegree, long globalRow, long globalCol) {
+    }
+
+    public DeviationCache() {
+        this(DEFAULT_PATCHES);
+    }
+
+    public DeviationCache(int capacityPatches) {
+        int capacity = Math.max(1, capacityPatches);
+        this.map = new LinkedHashMap<>(1024, 0.75f, true) {
+            @Override
+            protected boolean removeEldestEntry(Map.Entry<Key, float[]> eldest) {
+                return size() > capacity;
+            }
+        };
+    }
+
+    /** Raw deviations (metres, level 0..6, without the earth's chord sag), or null if not cached. */
+    float[] get(Key key) {
+        synchronized (map) {
+            return map.get(key);
+        }
+    }
+
+    void put(Key key, float[] deviationsMetres) {
+        synchronized (map) {
+            map.put(key, deviationsMetres);
+        }
+    }
+
+    /** Patches held. */
+    public int size() {
+        synchronized (map) {
+            return map.size();
+        }
+    }
+}

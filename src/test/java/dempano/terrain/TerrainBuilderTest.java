@@ -1,0 +1,71 @@
+package dempano.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.Synthetic;
+import dempano.dem.DemSource;
+import dempano.dem.MissingTilePolicy;
+import dempano.dem.Mosaic;
+import dempano.geo.Refraction;
+import dempano.geo.Viewpoint;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** Mesh building without GL: the deviation cache changes nothing but the time, and is reused. */
+class TerrainBuilderTest {
+    /** Rough relief: ridges in both directions, so that every level of detail has a different error. */
+    static double relief(double lat, double lon) {
+        return 800 + 600 * Math.sin(lat * 20) * Math.cos(lon * 15) + 30 * Math.sin(lat * 150 + lon * 90);
+    }
+
+    static TerrainBuilder.Terrain build(DemSource dem, double lat, double lon, double rangeMetres, DeviationCache cache) {
+        Mosaic m = Mosaic.around(dem, lat, lon, rangeMetres, MissingTilePolicy.SEA_LEVEL);
+        Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, 2);
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null, 20, 0.5, 1, cache);
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+            "46.5, 8.5, 46, 8",       // mid-block
+            "10.5, 179.8, 10, 179",   // across the antimeridian: the global patch grid wraps
+            "-0.3, -0.4, -1, -1",     // equator and prime meridian
+    })
+    void theCacheGivesTheSameTerrainAndIsReusedByAViewpointNearby(double lat, double lon, int latS, int lonW) {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(latS - 1, lonW - 1, 3, 3));
+        double range = 60_000;
+        DeviationCache cache = new DeviationCache();
+        TerrainBuilder.Terrain first = build(dem, lat, lon, range, cache);
+        TerrainBuilder.Terrain uncached = build(dem, lat, lon, range, null);
+        int filled = cache.size();
+        assertTrue(filled > 0.8 * first.patches(), "most patches are cacheable: " + filled + " of " + first.patches());
+        TerrainBuilder.Terrain again = build(dem, lat, lon, range, cache);
+        assertEquals(filled, cache.size(), "a second render of the same viewpoint adds nothing");
+        for (TerrainBuilder.Terrain t : new TerrainBuilder.Terrain[] {uncached, again}) {
+            assertArrayEquals(first.patchesPerLevel(), t.patchesPerLevel());
+            assertEquals(first.triangles(), t.triangles());
+            assertEquals(first.vertices(), t.vertices());
+        }
+        assertTrue(java.util.Arrays.stream(first.patchesPerLevel()).filter(n -> n > 0).count() >= 3,
+                "several levels are in use: " + java.util.Arrays.toString(first.patchesPerLevel()));
+        // 2 km away the range circle moves by 2 km: only patches along its rim are new.
+        double lat2 = lat + 0.018;
+        TerrainBuilder.Terrain moved = build(dem, lat2, lon, range, cache);
+        int added = cache.size() - filled;
+        assertTrue(added < 0.1 * moved.patches(), added + " new patches of " + moved.patches());
+        TerrainBuilder.Terrain movedUncached = build(dem, lat2, lon, range, null);
+        assertArrayEquals(movedUncached.patchesPerLevel(), moved.patchesPerLevel());
+        assertEquals(movedUncached.triangles(), moved.triangles());
+    }
+
+    @Test
+    void aBoundedCacheForgetsTheLeastRecentlyUsed() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        DeviationCache small = new DeviationCache(20);
+        TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 30_000, small);
+        assertEquals(20, small.size());
+        assertEquals(build(dem, 46.5, 8.5, 30_000, null).triangles(), t.triangles());
+    }
+}
