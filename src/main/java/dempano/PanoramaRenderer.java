@@ -129,13 +129,13 @@ public final class PanoramaRenderer implements AutoCloseable {
         t = afterRender;
 
         progress.accept("stitching");
-        double[][] eyeDepth = new double[captures.length][];
+        float[][] inverseEyeDepth = new float[captures.length][];
         for (int k = 0; k < captures.length; k++) {
-            eyeDepth[k] = Stitcher.eyeDepths(captures[k], layout, req.depthMode(), near, far);
+            inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
         }
         int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
         float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
-        Stitcher.stitch(geometry, layout, captures, eyeDepth, argb, distance);
+        Stitcher.stitch(geometry, layout, captures, inverseEyeDepth, argb, distance);
         t = lap(timings, "stitch", t);
         return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
                 layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,

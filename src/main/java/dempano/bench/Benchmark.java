@@ -138,7 +138,7 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         return new Gson().fromJson(last, Result.class);
     }
 
-    /** In the fresh JVM: cold render at the viewpoint, then warm renders 2 km away. */
+    /** In the fresh JVM: cold render at the viewpoint, then warm renders of viewpoints 2, 4 and 6 km away. */
     private static int runChild(Case c) {
         Result r;
         try {
@@ -157,9 +157,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         boolean reference = c.renderer().equals("reference");
         PanoramaRequest a = PanoramaRequest.at(c.lat(), c.lon()).withRangeMetres(c.rangeKm() * 1000)
                 .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour());
-        // Warm: another viewpoint in the same area, 2 km north-east.
-        PanoramaRequest b = PanoramaRequest.at(c.lat() + 0.0127, c.lon() + 0.0185).withRangeMetres(c.rangeKm() * 1000)
-                .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour());
+        // Warm: other viewpoints in the same area, each 2 km north-east of the one before.
+        PanoramaRequest[] warmAt = new PanoramaRequest[3];
+        for (int i = 0; i < warmAt.length; i++) {
+            warmAt[i] = PanoramaRequest.at(c.lat() + 0.0127 * (i + 1), c.lon() + 0.0185 * (i + 1))
+                    .withRangeMetres(c.rangeKm() * 1000).withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx())
+                    .withColour(c.colour());
+        }
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
             double openMillis = (System.nanoTime() - t0) / 1e6;
             Panorama cold = r.render(a);
@@ -175,13 +179,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
                 Files.deleteIfExists(f);
             }
             Files.deleteIfExists(tmp);
-            // Warm: three renders, the median reported.
-            double[] warm = new double[3];
+            // Warm: three renders of three viewpoints, the median reported.
+            double[] warm = new double[warmAt.length];
             Panorama last = null;
             List<Map<String, Double>> stages = new ArrayList<>();
             for (int i = 0; i < warm.length; i++) {
                 long s = System.nanoTime();
-                last = r.render(b);
+                last = r.render(warmAt[i]);
                 warm[i] = (System.nanoTime() - s) / 1e6;
                 stages.add(last.metadata().timingsMillis());
             }
@@ -190,6 +194,7 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
             double refMillis = Double.NaN, med = Double.NaN, p99 = Double.NaN, sky = Double.NaN, over5 = Double.NaN;
             if (c.compare()) {
                 try (PanoramaRenderer cpu = PanoramaRenderer.openReference(dem)) {
+                    PanoramaRequest b = warmAt[warmAt.length - 1];
                     cpu.render(b); // warm its JIT too
                     long s = System.nanoTime();
                     Panorama ref = cpu.render(b);
@@ -248,7 +253,8 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
                 System.getProperty("java.version"), gl));
         md.append("- 360° panoramas, elevation −30°…30°, refraction 0.13, eye 2 m above the DEM. Each case runs in a fresh JVM:\n"
                 + "  **cold** = opening the renderer (GL context, shaders) + the first render, tiles decoded from disk;\n"
-                + "  **warm** = median of three renders of another viewpoint 2 km away in the same JVM (tiles cached).\n"
+                + "  **warm** = median of three renders in the same JVM of three other viewpoints, 2, 4 and 6 km away "
+                + "(tiles and patch deviations cached; the error is that of the last one).\n"
                 + "- Stages (ms): context, tiles (load + mosaic), mesh (level of detail, vertex placement), upload (scene to GL,\n"
                 + "  culling), draw (8 views, to glFinish), readback, stitch; write = PNG + .npy + distance PNG + JSON.\n"
                 + "- Peak memory: the process's peak resident set (VmHWM: heap, native buffers and the GL driver).\n"

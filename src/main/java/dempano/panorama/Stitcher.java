@@ -15,43 +15,45 @@ public final class Stitcher {
     private Stitcher() {
     }
 
-    /** Converts a capture's raw depth to eye depth, metres (+∞ for sky). */
-    public static double[] eyeDepths(ViewCapture c, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
-        double[] z = new double[c.depth().length];
+    /**
+     * Converts a capture's raw depth to inverse eye depth, 1/metres (0 for sky). Inverse depth is
+     * what is affine across a planar triangle, so it is what the stitcher interpolates; as a float it
+     * keeps 6e-8 of relative precision.
+     */
+    public static float[] inverseEyeDepths(ViewCapture c, ViewLayout layout, DepthMode mode, double nearMetres,
+                                           double farMetres) {
+        float[] depth = c.depth();
+        float[] inv = new float[depth.length];
         int w = layout.widthPx();
+        // Shader range to eye depth: divide by the ray's secant, √(1 + x² + y²) (per row and column).
+        double[] xx = new double[w];
+        for (int x = 0; x < w; x++) {
+            double t = layout.xTanOfPixel(x);
+            xx[x] = t * t;
+        }
         IntStream.range(0, layout.heightPx()).parallel().forEach(row -> {
-            for (int i = row * w; i < (row + 1) * w; i++) {
-                eyeDepth(c.depth()[i], i, z, w, layout, mode, nearMetres, farMetres);
+            double y = layout.yTanOfPixel(row), yy1 = 1 + y * y;
+            for (int x = 0, i = row * w; x < w; x++, i++) {
+                float d = depth[i];
+                inv[i] = switch (mode) {
+                    case STANDARD_24 -> d >= 1f ? 0f
+                            : (float) (1 / DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres));
+                    case REVERSED_32F -> d > 0 ? (float) (d / nearMetres) : 0f; // z_e = n / z_b
+                    case SHADER_RANGE -> d > 0 && d < Float.POSITIVE_INFINITY ? (float) (Math.sqrt(yy1 + xx[x]) / d) : 0f;
+                };
             }
         });
-        return z;
-    }
-
-    private static void eyeDepth(float d, int i, double[] z, int w, ViewLayout layout, DepthMode mode, double nearMetres,
-                                 double farMetres) {
-        switch (mode) {
-            case STANDARD_24 -> z[i] = d >= 1f ? Double.POSITIVE_INFINITY : DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres);
-            case REVERSED_32F -> z[i] = DepthLinearizer.reversedEyeDepth(d, nearMetres);
-            case SHADER_RANGE -> {
-                if (!(d > 0) || Float.isInfinite(d)) {
-                    z[i] = Double.POSITIVE_INFINITY;
-                } else {
-                    double x = layout.xTanOfPixel(i % w), y = layout.yTanOfPixel(i / w);
-                    z[i] = d / Math.sqrt(1 + x * x + y * y);
-                }
-            }
-            default -> throw new IllegalStateException();
-        }
+        return inv;
     }
 
     /**
      * Builds colour and distance for every panorama pixel.
      *
-     * @param eyeDepth per view, eye depths from {@link #eyeDepths}
+     * @param inverseEyeDepth per view, from {@link #inverseEyeDepths}
      * @param argbOut  receives colour, row-major, row 0 at the top; null to skip colour
      * @param rangeOut receives straight-line distance in metres, +∞ for sky
      */
-    public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, double[][] eyeDepth,
+    public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                               int[] argbOut, float[] rangeOut) {
         int width = g.widthPx();
         // Per column: its view, x in the view, and the secant of its angle off the view's axis;
@@ -82,7 +84,7 @@ public final class Stitcher {
                 if (argbOut != null) {
                     argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
                 }
-                rangeOut[i] = (float) range(eyeDepth[view], layout, p, scratch);
+                rangeOut[i] = (float) range(inverseEyeDepth[view], layout, p, scratch);
             }
         });
     }
@@ -125,20 +127,21 @@ public final class Stitcher {
      *
      * @param w a 4×4 scratch buffer, overwritten
      */
-    static double range(double[] z, ViewLayout l, double[] p, double[][] w) {
+    static double range(float[] inv, ViewLayout l, double[] p, double[][] w) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         double fx = p[0] - x0, fy = p[1] - y0;
         // Fast path, most pixels: the central 2×2 are one smooth surface, or all sky.
         {
             int xa = clampX(l, x0), xb = clampX(l, x0 + 1), ya = clampY(l, y0) * l.widthPx(), yb = clampY(l, y0 + 1) * l.widthPx();
-            double z00 = z[ya + xa], z01 = z[ya + xb], z10 = z[yb + xa], z11 = z[yb + xb];
-            double lo = Math.min(Math.min(z00, z01), Math.min(z10, z11)), hi = Math.max(Math.max(z00, z01), Math.max(z10, z11));
-            if (lo == Double.POSITIVE_INFINITY) {
+            float i00 = inv[ya + xa], i01 = inv[ya + xb], i10 = inv[yb + xa], i11 = inv[yb + xb];
+            float lo = Math.min(Math.min(i00, i01), Math.min(i10, i11)), hi = Math.max(Math.max(i00, i01), Math.max(i10, i11));
+            if (hi == 0) {
                 return Double.POSITIVE_INFINITY;
             }
-            if (hi <= lo * SAME_SURFACE_RATIO) {
-                double inv = (1 - fy) * ((1 - fx) / z00 + fx / z01) + fy * ((1 - fx) / z10 + fx / z11);
-                return DepthLinearizer.rangeFromEyeDepth(1 / inv, p[2], p[3]);
+            // Depths within the ratio: the smallest inverse depth at least the largest / ratio (sky fails).
+            if (lo * SAME_SURFACE_RATIO >= hi) {
+                double mean = (1 - fy) * ((1 - fx) * i00 + fx * i01) + fy * ((1 - fx) * i10 + fx * i11);
+                return DepthLinearizer.rangeFromEyeDepth(1 / mean, p[2], p[3]);
             }
         }
         // w: [dy + 1][dx + 1] of 1/z for dy, dx in -1..2 (a 4×4 buffer the caller reuses)
@@ -149,7 +152,7 @@ public final class Stitcher {
                 if (outer && (x < 0 || y < 0 || x >= l.widthPx() || y >= l.heightPx())) {
                     w[dy + 1][dx + 1] = Double.NaN; // beyond the view's edge: that triple is not tested
                 } else {
-                    w[dy + 1][dx + 1] = 1 / z[clampY(l, y) * l.widthPx() + clampX(l, x)];
+                    w[dy + 1][dx + 1] = inv[clampY(l, y) * l.widthPx() + clampX(l, x)];
                 }
             }
         }

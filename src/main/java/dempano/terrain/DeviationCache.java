@@ -1,7 +1,10 @@
 package dempano.terrain;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
+import java.util.function.BiConsumer;
+import java.util.function.Function;
 
 /**
  * Per-patch deviations ({@link LevelOfDetail#deviationsMetres}) kept across renders, so that a
@@ -35,16 +38,24 @@ public final class DeviationCache {
         };
     }
 
-    /** Raw deviations (metres, level 0..6, without the earth's chord sag), or null if not cached. */
-    float[] get(Key key) {
+    /** Hands each item the cached raw deviations of its key (metres, levels 0..6, no chord sag), where held. */
+    <T> void lookUp(List<T> items, Function<T, Key> key, BiConsumer<T, float[]> found) {
         synchronized (map) {
-            return map.get(key);
+            for (T item : items) {
+                float[] d = map.get(key.apply(item));
+                if (d != null) {
+                    found.accept(item, d);
+                }
+            }
         }
     }
 
-    void put(Key key, float[] deviationsMetres) {
+    /** Keeps the items' raw deviations under their keys. */
+    <T> void store(List<T> items, Function<T, Key> key, Function<T, float[]> deviationsMetres) {
         synchronized (map) {
-            map.put(key, deviationsMetres);
+            for (T item : items) {
+                map.put(key.apply(item), deviationsMetres.apply(item));
+            }
         }
     }
 

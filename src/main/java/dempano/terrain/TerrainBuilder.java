@@ -136,8 +136,8 @@ public final class TerrainBuilder {
         }
         // Pass 1 (parallel): distance and deviations from the heights alone; choose the level.
         double rowMetresExact = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
-        IntStream.range(0, candidates.size()).parallel().forEach(i -> {
-            PatchWork w = candidates.get(i);
+        List<PatchWork> inRange = new ArrayList<>();
+        for (PatchWork w : candidates) {
             // Nearest point of the patch to the eye, horizontally, as a lower bound (slightly short rows
             // and columns): it decides both the range cut and the level.
             double dr = Math.max(0, Math.max(w.row0 - eyeRow, eyeRow - (w.row0 + p))) * rowMetresExact * 0.995;
@@ -145,17 +145,32 @@ public final class TerrainBuilder {
             w.nearestMetres = Math.hypot(dr, dc);
             if (w.nearestMetres > rangeMetres + 2000) {
                 w.nearestMetres = Double.NaN; // beyond range: dropped
-                return;
+            } else {
+                w.cacheKey = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + w.row0,
+                        Math.floorMod(globalCol0 + w.col0, 360L * mosaic.intervalsPerDegree()));
+                inRange.add(w);
             }
-            float[] raw = rawDeviations(mosaic, w.row0, w.col0, globalRow0, globalCol0, cache);
-            w.deviations = new double[raw.length];
+        }
+        if (cache != null) {
+            cache.lookUp(inRange, w -> w.cacheKey, (w, raw) -> w.rawDeviations = raw);
+        }
+        IntStream.range(0, inRange.size()).parallel().forEach(i -> {
+            PatchWork w = inRange.get(i);
+            if (w.rawDeviations == null) {
+                w.rawDeviations = measureDeviations(mosaic, w.row0, w.col0);
+                w.cacheable = cacheable(mosaic, w.row0, w.col0);
+            }
+            w.deviations = new double[w.rawDeviations.length];
             // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
-            for (int level = 1; level < raw.length; level++) {
-                w.deviations[level] = raw[level]
+            for (int level = 1; level < w.rawDeviations.length; level++) {
+                w.deviations[level] = w.rawDeviations[level]
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
             w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
         });
+        if (cache != null) {
+            cache.store(inRange.stream().filter(w -> w.cacheable).toList(), w -> w.cacheKey, w -> w.rawDeviations);
+        }
         Map<Long, PatchWork> work = new HashMap<>();
         for (PatchWork w : candidates) {
             if (!Double.isNaN(w.nearestMetres)) {
@@ -203,27 +218,14 @@ public final class TerrainBuilder {
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel);
     }
 
-    /**
-     * A patch's deviations per level, metres (rounded up to float), from the cache or measured on the
-     * mosaic (and then cached, unless the patch reaches beyond the mosaic or into unloaded tiles,
-     * whose heights depend on the viewpoint).
-     */
-    private static float[] rawDeviations(Mosaic mosaic, int row0, int col0, long globalRow0, long globalCol0,
-                                         DeviationCache cache) {
+    /** A patch's deviations per level measured on the mosaic, metres (rounded up to float). */
+    private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
-        DeviationCache.Key key = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + row0,
-                Math.floorMod(globalCol0 + col0, 360L * mosaic.intervalsPerDegree()));
-        float[] cached = cache == null ? null : cache.get(key);
-        if (cached != null) {
-            return cached;
-        }
-        boolean cacheable = row0 >= 0 && col0 >= 0 && row0 + p < mosaic.rows() && col0 + p < mosaic.cols();
         float[] heights = new float[(p + 1) * (p + 1)];
         for (int a = 0; a <= p; a++) {
             int r = Math.max(0, Math.min(row0 + a, mosaic.rows() - 1));
             for (int b = 0; b <= p; b++) {
                 float h = mosaic.sample(r, Math.max(0, Math.min(col0 + b, mosaic.cols() - 1)));
-                cacheable &= !Float.isNaN(h);
                 heights[a * (p + 1) + b] = Float.isNaN(h) ? 0f : h; // NaN only beyond range
             }
         }
@@ -232,10 +234,27 @@ public final class TerrainBuilder {
         for (int l = 0; l < dev.length; l++) {
             raw[l] = (float) dev[l] < dev[l] ? Math.nextUp((float) dev[l]) : (float) dev[l];
         }
-        if (cacheable && cache != null) {
-            cache.put(key, raw);
-        }
         return raw;
+    }
+
+    /**
+     * Whether a patch's deviations hold for every viewpoint: not if it reaches beyond the mosaic or
+     * into tiles that were not loaded, whose heights (sea level stand-ins) depend on the viewpoint.
+     */
+    private static boolean cacheable(Mosaic mosaic, int row0, int col0) {
+        int p = PATCH_INTERVALS;
+        if (row0 < 0 || col0 < 0 || row0 + p >= mosaic.rows() || col0 + p >= mosaic.cols()) {
+            return false;
+        }
+        // Loading is per tile: the corners and the midpoints of the edges meet every tile the patch touches.
+        for (int a = 0; a <= p; a += p / 2) {
+            for (int b = 0; b <= p; b += p / 2) {
+                if (Float.isNaN(mosaic.sample(row0 + a, col0 + b))) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     private static long key(int row, int col) {
@@ -245,6 +264,9 @@ public final class TerrainBuilder {
     /** A patch on its way from heights to mesh. */
     private static final class PatchWork {
         int row0, col0, level;
+        DeviationCache.Key cacheKey;
+        float[] rawDeviations;
+        boolean cacheable;
         double nearestMetres;
         double[] deviations;
         Mesh mesh;

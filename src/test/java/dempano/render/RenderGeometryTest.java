@@ -53,7 +53,8 @@ class RenderGeometryTest {
 
     static PanoramaRequest hillRequest(DepthMode mode) {
         return PanoramaRequest.at(EYE_LAT, EYE_LON).withRangeMetres(40_000).withRefraction(Refraction.NONE)
-                .withElevationRange(new ElevationRange(-10, 10, false)).withDepthMode(mode);
+                .withElevationRange(new ElevationRange(-10, 10, false)).withDepthMode(mode)
+                .withLodErrorPx(0); // the geometry at full resolution; LevelOfDetailRenderTest bounds what LOD adds
     }
 
     /** Skyline: elevation (deg) of the top edge of the first terrain row in a column, or NaN. */
