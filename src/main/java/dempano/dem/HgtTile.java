@@ -16,6 +16,9 @@ public final class HgtTile {
     private final TileId id;
     private final String source;
     private final int samplesPerSide;
+    /** Heights when all are whole metres in int16 range (SRTM without voids): half the memory. */
+    private final short[] wholeMetres;
+    /** Heights otherwise (filled voids, synthetic terrain). Exactly one of the two is non-null. */
     private final float[] heightsMetres;
     private final VoidReport voids;
     private final java.util.BitSet filledVoids;
@@ -33,7 +36,16 @@ public final class HgtTile {
             throw new IllegalArgumentException("heights do not match " + samplesPerSide + "²");
         }
         this.samplesPerSide = samplesPerSide;
-        this.heightsMetres = heightsMetres;
+        short[] whole = new short[heightsMetres.length];
+        for (int i = 0; i < heightsMetres.length && whole != null; i++) {
+            float h = heightsMetres[i];
+            whole[i] = (short) h;
+            if (whole[i] != h) {
+                whole = null; // not a whole number of metres in range (or NaN): keep floats
+            }
+        }
+        this.wholeMetres = whole;
+        this.heightsMetres = whole == null ? heightsMetres : null;
         this.voids = Objects.requireNonNull(voids);
     }
 
@@ -72,7 +84,8 @@ public final class HgtTile {
 
     /** Height in metres at a sample; row 0 north, column 0 west. */
     public float heightMetres(int row, int col) {
-        return heightsMetres[row * samplesPerSide + col];
+        int i = row * samplesPerSide + col;
+        return wholeMetres != null ? wholeMetres[i] : heightsMetres[i];
     }
 
     /** True if the sample was a void, its height now interpolated. */
@@ -87,7 +100,7 @@ public final class HgtTile {
 
     /** True if the tile had no valid sample at all (then it holds sea level and is treated as missing). */
     public boolean entirelyVoid() {
-        return voids.voidCells() == heightsMetres.length;
+        return voids.voidCells() == (long) samplesPerSide * samplesPerSide;
     }
 
     /** Bilinear height at a position inside the tile, metres. */

@@ -11,7 +11,8 @@ import java.util.function.Function;
  * pipeline rendering many viewpoints of one area measures each patch of the DEM once. Patches lie
  * on a grid aligned to whole multiples of {@link TerrainBuilder#PATCH_INTERVALS} samples from 90°N
  * and 180°W, so the same patch has the same key whatever the viewpoint. Valid for one DEM source
- * only (the key holds no tile contents). Bounded (least recently used entries go first) and
+ * only (the key holds no tile contents), whose neighbouring tiles agree on their shared edges (as
+ * SRTM tiles do): which of two tiles supplies an edge sample depends on which are loaded. Bounded (least recently used entries go first) and
  * thread-safe.
  */
 public final class DeviationCache {

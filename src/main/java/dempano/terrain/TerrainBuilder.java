@@ -9,6 +9,9 @@ import com.jme3.scene.VertexBuffer;
 import com.jme3.terrain.geomipmap.TerrainPatch;
 import com.jme3.terrain.geomipmap.TerrainQuad;
 import com.jme3.util.BufferUtils;
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import java.nio.ShortBuffer;
 import dempano.dem.Mosaic;
 import dempano.geo.Ellipsoid;
 import dempano.geo.LocalFrame;
@@ -41,6 +44,8 @@ public final class TerrainBuilder {
     public static final int BLOCK_INTERVALS = 512;
     /** Cells per TerrainPatch side. */
     public static final int PATCH_INTERVALS = 64;
+    /** Patches at this level (step 4) and coarser are merged per block into one geometry. */
+    static final int MERGED_LEVEL = 2;
 
     private TerrainBuilder() {
     }
@@ -148,17 +153,21 @@ public final class TerrainBuilder {
             } else {
                 w.cacheKey = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + w.row0,
                         Math.floorMod(globalCol0 + w.col0, 360L * mosaic.intervalsPerDegree()));
+                // Cached deviations hold only where this mosaic has every height of the patch too.
+                w.cacheable = cacheable(mosaic, w.row0, w.col0);
                 inRange.add(w);
             }
         }
         if (cache != null) {
-            cache.lookUp(inRange, w -> w.cacheKey, (w, raw) -> w.rawDeviations = raw);
+            cache.lookUp(inRange.stream().filter(w -> w.cacheable).toList(), w -> w.cacheKey, (w, raw) -> {
+                w.rawDeviations = raw;
+                w.fromCache = true;
+            });
         }
         IntStream.range(0, inRange.size()).parallel().forEach(i -> {
             PatchWork w = inRange.get(i);
             if (w.rawDeviations == null) {
                 w.rawDeviations = measureDeviations(mosaic, w.row0, w.col0);
-                w.cacheable = cacheable(mosaic, w.row0, w.col0);
             }
             w.deviations = new double[w.rawDeviations.length];
             // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
@@ -169,7 +178,8 @@ public final class TerrainBuilder {
             w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
         });
         if (cache != null) {
-            cache.store(inRange.stream().filter(w -> w.cacheable).toList(), w -> w.cacheKey, w -> w.rawDeviations);
+            cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
+                    w -> w.rawDeviations);
         }
         Map<Long, PatchWork> work = new HashMap<>();
         for (PatchWork w : candidates) {
@@ -177,24 +187,27 @@ public final class TerrainBuilder {
                 work.put(key(w.row0, w.col0), w);
             }
         }
-        // Pass 2 (parallel): place the vertices each patch draws, with skirts where levels may differ.
+        // Pass 2 (parallel): place the vertices each patch draws, with skirts on the edges where the
+        // neighbour's level differs (equal levels share their edge vertices exactly: no crack).
         List<PatchWork> kept = new ArrayList<>(work.values());
         IntStream.range(0, kept.size()).parallel().forEach(i -> {
             PatchWork w = kept.get(i);
-            double neighbours = 0;
-            for (long k : new long[] {key(w.row0 - p, w.col0), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p),
-                    key(w.row0, w.col0 + p)}) {
-                PatchWork n = work.get(k);
-                if (n != null) {
-                    neighbours = Math.max(neighbours, n.errorMetres());
+            long[] sides = {key(w.row0 - p, w.col0), key(w.row0, w.col0 + p), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p)};
+            double[] skirts = new double[4]; // north, east, south, west
+            for (int e = 0; e < 4; e++) {
+                PatchWork n = work.get(sides[e]);
+                if (n != null && n.level != w.level) {
+                    skirts[e] = w.errorMetres() + n.errorMetres() + 0.5;
                 }
             }
-            double skirt = w.errorMetres() + neighbours;
-            w.mesh = placer.mesh(w, skirt > 0 ? skirt + 0.5 : 0);
+            w.mesh = placer.mesh(w, skirts);
         });
 
+        // Coarse patches (few vertices each) are merged per block into one geometry: tens of
+        // thousands of tiny draw calls and buffers cost more than their triangles.
         Node root = new Node("terrain");
         Map<Long, TerrainQuad> quads = new HashMap<>();
+        Map<Long, List<PatchMesh>> merged = new HashMap<>();
         long vertices = 0, triangles = 0;
         int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(p) + 1];
         for (PatchWork w : kept) {
@@ -205,23 +218,37 @@ public final class TerrainBuilder {
                 root.attachChild(q);
                 return q;
             });
-            TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
-            patch.setMesh(w.mesh);
+            vertices += w.mesh.vertexCount();
+            triangles += w.mesh.indices().length / 3;
+            patchesPerLevel[w.level]++;
+            if (w.level >= MERGED_LEVEL) {
+                merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
+            } else {
+                TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
+                patch.setMesh(PatchMesh.merge(List.of(w.mesh)));
+                patch.setMaterial(material);
+                quad.attachChild(patch);
+            }
+        }
+        for (Map.Entry<Long, List<PatchMesh>> e : merged.entrySet()) {
+            TerrainQuad quad = quads.get(e.getKey());
+            TerrainPatch patch = new TerrainPatch(quad.getName() + "-coarse-" + e.getValue().size() + "-patches");
+            patch.setMesh(PatchMesh.merge(e.getValue()));
             patch.setMaterial(material);
             quad.attachChild(patch);
-            vertices += w.mesh.getVertexCount();
-            triangles += w.mesh.getTriangleCount();
-            patchesPerLevel[w.level]++;
         }
         root.updateModelBound();
         root.updateGeometricState();
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel);
     }
 
+    private static final ThreadLocal<float[]> PATCH_HEIGHTS =
+            ThreadLocal.withInitial(() -> new float[(PATCH_INTERVALS + 1) * (PATCH_INTERVALS + 1)]);
+
     /** A patch's deviations per level measured on the mosaic, metres (rounded up to float). */
     private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
-        float[] heights = new float[(p + 1) * (p + 1)];
+        float[] heights = PATCH_HEIGHTS.get(); // reused: tens of thousands of patches per build
         for (int a = 0; a <= p; a++) {
             int r = Math.max(0, Math.min(row0 + a, mosaic.rows() - 1));
             for (int b = 0; b <= p; b++) {
@@ -266,13 +293,61 @@ public final class TerrainBuilder {
         int row0, col0, level;
         DeviationCache.Key cacheKey;
         float[] rawDeviations;
-        boolean cacheable;
+        boolean cacheable, fromCache;
         double nearestMetres;
         double[] deviations;
-        Mesh mesh;
+        PatchMesh mesh;
 
         double errorMetres() {
             return deviations[level];
+        }
+    }
+
+    /** A patch's vertex arrays (positions and normals in jME axes, texture coordinates) and triangles. */
+    record PatchMesh(float[] positions, float[] normals, float[] texCoords, int[] indices) {
+        int vertexCount() {
+            return positions.length / 3;
+        }
+
+        /** One jME mesh of several patches (indices 16-bit where they fit). */
+        static Mesh merge(List<PatchMesh> parts) {
+            int nv = 0, ni = 0;
+            for (PatchMesh m : parts) {
+                nv += m.vertexCount();
+                ni += m.indices.length;
+            }
+            FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), nor = BufferUtils.createFloatBuffer(nv * 3);
+            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 2);
+            boolean shortIndices = nv <= 65536;
+            ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
+            IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
+            int base = 0;
+            for (PatchMesh m : parts) {
+                pos.put(m.positions);
+                nor.put(m.normals);
+                tex.put(m.texCoords);
+                for (int index : m.indices) {
+                    if (shortIndices) {
+                        si.put((short) (base + index));
+                    } else {
+                        ii.put(base + index);
+                    }
+                }
+                base += m.vertexCount();
+            }
+            Mesh mesh = new Mesh();
+            mesh.setMode(Mesh.Mode.Triangles);
+            mesh.setBuffer(VertexBuffer.Type.Position, 3, pos.flip());
+            mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
+            mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
+            if (shortIndices) {
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
+            } else {
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, ii.flip());
+            }
+            mesh.updateCounts();
+            mesh.updateBound();
+            return mesh;
         }
     }
 
@@ -335,13 +410,17 @@ public final class TerrainBuilder {
 
         /**
          * A patch's mesh at its level: every step-th sample, triangles split as {@link Triangulation}
-         * says (on the mosaic grid at full resolution, on the coarse grid otherwise), and skirts
-         * {@code skirtMetres} deep along its four edges when that is positive.
+         * says (on the mosaic grid at full resolution, on the coarse grid otherwise), and a skirt
+         * hanging {@code skirtsMetres[e]} deep below each edge e (north, east, south, west) where
+         * that is positive.
          */
-        Mesh mesh(PatchWork w, double skirtMetres) {
+        PatchMesh mesh(PatchWork w, double[] skirtsMetres) {
             int p = PATCH_INTERVALS, step = 1 << w.level, cs = p / step + 1;
-            int edge = 4 * (cs - 1), skirtVertices = skirtMetres > 0 ? edge + 1 : 0;
-            int n = cs * cs + skirtVertices;
+            int skirted = 0;
+            for (double d : skirtsMetres) {
+                skirted += d > 0 ? 1 : 0;
+            }
+            int n = cs * cs + skirted * cs;
             float[] positions = new float[n * 3], normals = new float[n * 3], elevations = new float[n * 2];
             double[] foot = new double[3], enu = new double[3];
             for (int gi = 0; gi < cs; gi++) {
@@ -378,8 +457,8 @@ public final class TerrainBuilder {
                 normals[3 * k + 1] = ny / len;
                 normals[3 * k + 2] = nz / len;
             }
-            int triangles = (cs - 1) * (cs - 1) * 2 + (skirtMetres > 0 ? 2 * edge : 0);
-            short[] indices = new short[triangles * 3];
+            int triangles = (cs - 1) * (cs - 1) * 2 + skirted * 2 * (cs - 1);
+            int[] indices = new int[triangles * 3];
             int at = 0;
             for (int gi = 0; gi < cs - 1; gi++) {
                 for (int gj = 0; gj < cs - 1; gj++) {
@@ -396,55 +475,46 @@ public final class TerrainBuilder {
                     }
                 }
             }
-            if (skirtMetres > 0) {
-                // The border, clockwise from the north-west corner and closed; each border vertex gets a
-                // twin skirtMetres lower along the ellipsoid normal.
-                int[] ring = new int[edge + 1];
-                int k = 0;
-                for (int j = 0; j < cs - 1; j++) {
-                    ring[k++] = j;
+            // Each skirted edge's vertices get twins lowered along the ellipsoid normal.
+            int twin = cs * cs;
+            for (int e = 0; e < 4; e++) {
+                if (!(skirtsMetres[e] > 0)) {
+                    continue;
                 }
-                for (int i = 0; i < cs - 1; i++) {
-                    ring[k++] = i * cs + cs - 1;
-                }
-                for (int j = cs - 1; j > 0; j--) {
-                    ring[k++] = (cs - 1) * cs + j;
-                }
-                for (int i = cs - 1; i > 0; i--) {
-                    ring[k++] = i * cs;
-                }
-                ring[k] = ring[0];
-                int base = cs * cs;
-                for (int e = 0; e <= edge; e++) {
-                    int v = ring[e], gi = v / cs, gj = v % cs, twin = base + e;
+                for (int t = 0; t < cs; t++) {
+                    int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                     int r = Math.max(0, Math.min(w.row0 + gi * step, mosaic.rows() - 1));
                     int c = Math.max(0, Math.min(w.col0 + gj * step, mosaic.cols() - 1));
-                    position(r, c, elevations[2 * v] * exaggeration, skirtMetres, foot, enu, positions, 3 * twin);
-                    System.arraycopy(normals, 3 * v, normals, 3 * twin, 3);
-                    elevations[2 * twin] = elevations[2 * v];
-                    elevations[2 * twin + 1] = elevations[2 * v + 1];
+                    position(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, enu, positions, 3 * k);
+                    System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
+                    elevations[2 * k] = elevations[2 * v];
+                    elevations[2 * k + 1] = elevations[2 * v + 1];
+                    if (t > 0) {
+                        // Faces are not culled (see OffscreenRenderer), so one winding serves both sides.
+                        int a = edgeVertex(e, t - 1, cs), b = v;
+                        at = put(indices, at, a, b, k);
+                        at = put(indices, at, a, k, k - 1);
+                    }
                 }
-                for (int e = 0; e < edge; e++) {
-                    // Faces are not culled (see OffscreenRenderer), so one winding serves both sides.
-                    at = put(indices, at, ring[e], ring[e + 1], base + e + 1);
-                    at = put(indices, at, ring[e], base + e + 1, base + e);
-                }
+                twin += cs;
             }
-            Mesh mesh = new Mesh();
-            mesh.setMode(Mesh.Mode.Triangles);
-            mesh.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(positions));
-            mesh.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(normals));
-            mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, BufferUtils.createFloatBuffer(elevations));
-            mesh.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createShortBuffer(indices));
-            mesh.updateCounts();
-            mesh.updateBound();
-            return mesh;
+            return new PatchMesh(positions, normals, elevations, indices);
         }
 
-        private static int put(short[] a, int w, int i, int j, int k) {
-            a[w] = (short) i;
-            a[w + 1] = (short) j;
-            a[w + 2] = (short) k;
+        /** Vertex index of the t-th vertex along edge e (0 north, 1 east, 2 south, 3 west). */
+        private static int edgeVertex(int e, int t, int cs) {
+            return switch (e) {
+                case 0 -> t;
+                case 1 -> t * cs + cs - 1;
+                case 2 -> (cs - 1) * cs + t;
+                default -> t * cs;
+            };
+        }
+
+        private static int put(int[] a, int w, int i, int j, int k) {
+            a[w] = i;
+            a[w + 1] = j;
+            a[w + 2] = k;
             return w + 3;
         }
     }

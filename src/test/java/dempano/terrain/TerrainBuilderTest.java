@@ -16,9 +16,14 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /** Mesh building without GL: the deviation cache changes nothing but the time, and is reused. */
 class TerrainBuilderTest {
-    /** Rough relief: ridges in both directions, so that every level of detail has a different error. */
+    /**
+     * Relief with ridges in both directions, so that every level of detail has a different error;
+     * periodic in longitude (whole cycles around the globe), so continuous across ±180° as real
+     * tiles are: neighbouring tiles must agree on their shared edge for cached deviations to hold.
+     */
     static double relief(double lat, double lon) {
-        return 800 + 600 * Math.sin(lat * 20) * Math.cos(lon * 15) + 30 * Math.sin(lat * 150 + lon * 90);
+        double lam = Math.toRadians(lon);
+        return 800 + 600 * Math.sin(lat * 20) * Math.cos(lam * 860) + 30 * Math.sin(lat * 150 + lam * 5157);
     }
 
     static TerrainBuilder.Terrain build(DemSource dem, double lat, double lon, double rangeMetres, DeviationCache cache) {
