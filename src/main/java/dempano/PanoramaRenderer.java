@@ -10,6 +10,7 @@ import dempano.panorama.LayerComputer;
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.PanoramaMetadata;
+import dempano.panorama.Silhouettes;
 import dempano.panorama.Stitcher;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
@@ -158,6 +159,9 @@ public final class PanoramaRenderer implements AutoCloseable {
                             float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
                             int views, int viewWidth, int viewHeight, double far, double near, double lodErrorPx,
                             long triangles) {
+        if (argb != null) {
+            Silhouettes.draw(argb, distance, geometry.widthPx(), geometry.heightPx());
+        }
         if (req.elevationRange().auto()) {
             PanoramaGeometry cropped = AutoCrop.crop(geometry, distance);
             int skip = (int) Math.round((geometry.topElevationDeg() - cropped.topElevationDeg()) * geometry.pixelsPerDegree());

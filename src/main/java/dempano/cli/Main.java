@@ -149,6 +149,7 @@ public final class Main implements Callable<Integer> {
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
+        dempano.io.AtomicFiles.checkWritable(Path.of(out + ".json")); // fail before rendering, not after
         DemDirectory dem = new DemDirectory(dir);
         dempano.summits.SummitList summitList = null;
         if (summitsFile != null) {

@@ -20,17 +20,27 @@ public final class AtomicFiles {
     }
 
     /**
+     * Checks, before any work is done, that {@link #write} can create {@code target}.
+     *
      * @throws IOException with a message naming the file when its directory is missing or unwritable
      */
-    public static void write(Path target, Body body) throws IOException {
-        Path abs = target.toAbsolutePath();
-        Path dir = abs.getParent();
+    public static void checkWritable(Path target) throws IOException {
+        Path dir = target.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
             throw new IOException("cannot write " + target + ": directory " + dir + " does not exist");
         }
         if (!Files.isWritable(dir)) {
             throw new IOException("cannot write " + target + ": directory " + dir + " is not writable");
         }
+    }
+
+    /**
+     * @throws IOException with a message naming the file when its directory is missing or unwritable
+     */
+    public static void write(Path target, Body body) throws IOException {
+        Path abs = target.toAbsolutePath();
+        Path dir = abs.getParent();
+        checkWritable(target);
         Path tmp;
         try {
             tmp = Files.createTempFile(dir, "." + abs.getFileName(), ".part");

@@ -52,11 +52,13 @@ class MainTest {
     }
 
     @ParameterizedTest
-    @CsvSource(delimiter = '|', value = {"--lat 46 --lon 8 --dem-dir /nonexistent/dem|does not exist"})
-    void inputProblemsExitOne(String args, String expected) {
+    @CsvSource(delimiter = '|', value = {"--lat 46 --lon 8 --dem-dir /nonexistent/dem|does not exist",
+            "--out /nonexistent/out/p|cannot write /nonexistent/out/p.json: directory /nonexistent/out does not exist"})
+    void inputProblemsExitOneBeforeAnyRendering(String args, String expected) {
         String[] r = run(args.split(" "));
         assertEquals("1", r[0], r[1]);
         assertTrue(r[1].contains(expected), r[1]);
+        assertFalse(r[1].contains("rendering"), "failed before rendering: " + r[1]);
     }
 
     @ParameterizedTest
