@@ -68,6 +68,18 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (.txt as de Ferranti's alps.txt, .csv name,lat,lon,elevation, .geojson OSM peaks): writes P-summits.json, P-summits.csv and P-labels.png.")
     Path summitsFile;
 
+    @Option(names = "--max-labels", paramLabel = "N", defaultValue = "0",
+            description = "At most N summit labels in P-labels.png (default: ${DEFAULT-VALUE} = no limit).")
+    int maxLabels;
+
+    @Option(names = "--label-spacing-px", paramLabel = "PX",
+            description = "Least horizontal distance between labelled summits, pixels (default: one text line, about 18 px).")
+    Double labelSpacingPx;
+
+    @Option(names = "--label-order", paramLabel = "ORDER", defaultValue = "height",
+            description = "Which summits win where labels compete: height (highest first), angle (highest in the picture first) or distance (nearest first) (default: ${DEFAULT-VALUE}).")
+    String labelOrder;
+
     @Option(names = "--lenient-summits", description = "Skip bad lines of the summit list (reported) instead of failing.")
     boolean lenientSummits;
 
@@ -151,6 +163,14 @@ public final class Main implements Callable<Integer> {
         }
         dempano.io.AtomicFiles.checkWritable(Path.of(out + ".json")); // fail before rendering, not after
         DemDirectory dem = new DemDirectory(dir);
+        dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
+                labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
+                    case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;
+                    case "angle" -> dempano.io.SummitWriter.LabelOrder.ANGLE;
+                    case "distance" -> dempano.io.SummitWriter.LabelOrder.DISTANCE;
+                    default -> throw new IllegalArgumentException("--label-order must be height, angle or distance, got "
+                            + labelOrder);
+                });
         dempano.summits.SummitList summitList = null;
         if (summitsFile != null) {
             // Read before rendering: a bad list fails fast.
@@ -192,7 +212,7 @@ public final class Main implements Callable<Integer> {
         var files = new java.util.ArrayList<>(PanoramaWriter.write(p, out, pfm));
         if (summitList != null) {
             var sightings = p.summits(summitList);
-            files.addAll(dempano.io.SummitWriter.write(p, sightings, out));
+            files.addAll(dempano.io.SummitWriter.write(p, sightings, out, labelOptions));
             System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),
                     sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
         }

@@ -27,8 +27,53 @@ public final class SummitWriter {
     private SummitWriter() {
     }
 
+    /** Which summits get a label, and how densely. */
+    public enum LabelOrder {
+        /** Highest summit first (the default: what people name first). */
+        HEIGHT,
+        /** Highest in the picture first (largest elevation angle: the most striking). */
+        ANGLE,
+        /** Nearest first. */
+        DISTANCE;
+
+        Comparator<SummitSighting> comparator() {
+            return switch (this) {
+                case HEIGHT -> Comparator.comparingDouble(s -> -s.summit().elevationMetres());
+                case ANGLE -> Comparator.comparingDouble(s -> -s.elevationAngleDeg());
+                case DISTANCE -> Comparator.comparingDouble(SummitSighting::slantMetres);
+            };
+        }
+    }
+
+    /**
+     * Label density.
+     *
+     * @param maxLabels  at most this many labels (0 = no limit)
+     * @param spacingPx  least horizontal distance between two labelled summits, pixels; NaN = one
+     *                   text line (the least that keeps the vertical labels from overlapping)
+     * @param order      which summits win where they compete for room
+     */
+    public record LabelOptions(int maxLabels, double spacingPx, LabelOrder order) {
+        public static final LabelOptions DEFAULT = new LabelOptions(0, Double.NaN, LabelOrder.HEIGHT);
+
+        public LabelOptions {
+            if (maxLabels < 0) {
+                throw new IllegalArgumentException("the number of labels must be 0 (no limit) or more, got " + maxLabels);
+            }
+            if (!Double.isNaN(spacingPx) && !(spacingPx >= 0 && spacingPx < 1e6)) {
+                throw new IllegalArgumentException("label spacing must be a number of pixels ≥ 0, got " + spacingPx);
+            }
+        }
+    }
+
     /** Writes the three files for prefix P (the labels only when the panorama has colour); returns their paths. */
     public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix) throws IOException {
+        return write(p, sightings, prefix, LabelOptions.DEFAULT);
+    }
+
+    /** As {@link #write(Panorama, List, String)}, with the label density given. */
+    public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix, LabelOptions options)
+            throws IOException {
         Path json = Path.of(prefix + "-summits.json"), csv = Path.of(prefix + "-summits.csv"), png = Path.of(prefix + "-labels.png");
         String jsonText = json(sightings);
         AtomicFiles.write(json, out -> out.write(jsonText.getBytes(StandardCharsets.UTF_8)));
@@ -37,7 +82,7 @@ public final class SummitWriter {
         if (!p.hasColour()) {
             return List.of(json, csv);
         }
-        BufferedImage labelled = labels(p, sightings);
+        BufferedImage labelled = labels(p, sightings, options);
         AtomicFiles.write(png, out -> ImageIO.write(labelled, "png", out));
         return List.of(json, csv, png);
     }
@@ -97,38 +142,19 @@ public final class SummitWriter {
     }
 
     /**
-     * The panorama with a band above it for labels: visible summits, highest first, each with its
-     * own slot of one text line's width (so labels never overlap; a summit too close to a higher
-     * one's slot is left unlabelled), a vertical label "NAME 2927 m · 12.3 km" and a leader line
-     * from the label down to the summit's pixel.
+     * The panorama with a band above it for labels: visible summits in the options' order, each with
+     * its own slot at least one text line wide (so labels never overlap; a summit too close to a
+     * better one's slot is left unlabelled), a vertical label "NAME 2927 m · 12.3 km" and a leader
+     * line from the label down to the summit's pixel.
      */
-    public static BufferedImage labels(Panorama p, List<SummitSighting> sightings) {
+    public static BufferedImage labels(Panorama p, List<SummitSighting> sightings, LabelOptions options) {
         int w = p.widthPx(), h = p.heightPx();
         Font font = new Font(Font.SANS_SERIF, Font.PLAIN, 13);
         BufferedImage probe = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB);
         FontMetrics fm = probe.createGraphics().getFontMetrics(font);
-        int slot = fm.getHeight() + 3;
-        List<SummitSighting> chosen = new ArrayList<>();
-        List<SummitSighting> candidates = new ArrayList<>();
-        for (SummitSighting s : sightings) {
-            if (s.visible() && s.pixelY() >= 0 && s.pixelY() < h) {
-                candidates.add(s);
-            }
-        }
-        candidates.sort(Comparator.comparingDouble((SummitSighting s) -> -s.summit().elevationMetres()));
-        for (SummitSighting s : candidates) {
-            boolean free = true;
-            for (SummitSighting c : chosen) {
-                double dx = Math.abs(c.pixelX() - s.pixelX());
-                if (Math.min(dx, w - dx) < slot) {
-                    free = false;
-                    break;
-                }
-            }
-            if (free) {
-                chosen.add(s);
-            }
-        }
+        int line = fm.getHeight() + 3;
+        double spacing = Double.isNaN(options.spacingPx()) ? line : Math.max(line, options.spacingPx());
+        List<SummitSighting> chosen = chooseLabels(sightings, w, h, spacing, options.maxLabels(), options.order());
         int longest = 0;
         for (SummitSighting s : chosen) {
             longest = Math.max(longest, fm.stringWidth(text(s)));
@@ -159,6 +185,40 @@ public final class SummitWriter {
         }
         g.dispose();
         return img;
+    }
+
+    /**
+     * The visible summits inside the picture that get a label: taken in {@code order}, each kept if no
+     * kept one lies within {@code spacingPx} columns (across the 0°/360° seam too), until
+     * {@code maxLabels} are kept (0 = no limit).
+     */
+    static List<SummitSighting> chooseLabels(List<SummitSighting> sightings, int widthPx, int heightPx, double spacingPx,
+                                             int maxLabels, LabelOrder order) {
+        List<SummitSighting> candidates = new ArrayList<>();
+        for (SummitSighting s : sightings) {
+            if (s.visible() && s.pixelY() >= 0 && s.pixelY() < heightPx) {
+                candidates.add(s);
+            }
+        }
+        candidates.sort(order.comparator());
+        List<SummitSighting> chosen = new ArrayList<>();
+        for (SummitSighting s : candidates) {
+            if (maxLabels > 0 && chosen.size() >= maxLabels) {
+                break;
+            }
+            boolean free = true;
+            for (SummitSighting c : chosen) {
+                double dx = Math.abs(c.pixelX() - s.pixelX());
+                if (Math.min(dx, widthPx - dx) < spacingPx) {
+                    free = false;
+                    break;
+                }
+            }
+            if (free) {
+                chosen.add(s);
+            }
+        }
+        return chosen;
     }
 
     static String text(SummitSighting s) {
