@@ -103,11 +103,14 @@ public final class PanoramaRenderer implements AutoCloseable {
         if (!req.colour()) {
             material.setBoolean("DistanceOnly", true);
         }
+        ElevationRange er = req.elevationRange();
+        // Terrain wholly below the lowest view row the stitcher samples (the bottom row's 4×4
+        // neighbourhood reaches two view pixels lower) is left out with what nearer terrain hides.
+        double cullBelowDeg = er.bottomDeg() - 3 / req.pixelsPerDegree();
         TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
-                req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations);
+                req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, cullBelowDeg);
         t = lap(timings, "mesh", t);
 
-        ElevationRange er = req.elevationRange();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).

@@ -44,6 +44,8 @@ public final class TerrainBuilder {
     public static final int BLOCK_INTERVALS = 512;
     /** Cells per TerrainPatch side. */
     public static final int PATCH_INTERVALS = 64;
+    /** Levels of detail of a patch: steps 1, 2, 4, … PATCH_INTERVALS. */
+    static final int LEVELS = Integer.numberOfTrailingZeros(PATCH_INTERVALS) + 1;
     /** Patches at this level (step 4) and coarser are merged per block into one geometry. */
     static final int MERGED_LEVEL = 2;
 
@@ -54,8 +56,10 @@ public final class TerrainBuilder {
      * What was built.
      *
      * @param patchesPerLevel patches drawn at each level (index = level, step 2^level)
+     * @param hiddenPatches   patches within range left out as hidden ({@link HorizonCulling})
      */
-    public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel) {
+    public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel,
+                          int hiddenPatches) {
     }
 
     /**
@@ -94,6 +98,18 @@ public final class TerrainBuilder {
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache) {
+        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, cache,
+                Double.NaN);
+    }
+
+    /**
+     * As above, and leaves out the patches {@link HorizonCulling} finds hidden from the eye: wholly
+     * below the horizon of nearer terrain, or wholly below {@code cullBelowDeg} (the lowest elevation
+     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves).
+     */
+    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
+                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
+                                double cullBelowDeg) {
         LocalFrame frame = eye.eyeFrame();
         double[] eyeFoot = new double[3];
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
@@ -169,9 +185,9 @@ public final class TerrainBuilder {
             if (w.rawDeviations == null) {
                 w.rawDeviations = measureDeviations(mosaic, w.row0, w.col0);
             }
-            w.deviations = new double[w.rawDeviations.length];
+            w.deviations = new double[LEVELS];
             // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
-            for (int level = 1; level < w.rawDeviations.length; level++) {
+            for (int level = 1; level < LEVELS; level++) {
                 w.deviations[level] = w.rawDeviations[level]
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
@@ -181,6 +197,10 @@ public final class TerrainBuilder {
             cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
                     w -> w.rawDeviations);
         }
+        int culled = 0;
+        if (!Double.isNaN(cullBelowDeg) && exaggeration == 1) {
+            culled = cull(inRange, mosaic, frame, eye.eyeAltitudeMetres(), refraction.coefficient(), cullBelowDeg);
+        }
         Map<Long, PatchWork> work = new HashMap<>();
         for (PatchWork w : candidates) {
             if (!Double.isNaN(w.nearestMetres)) {
@@ -189,7 +209,8 @@ public final class TerrainBuilder {
         }
         // Pass 2 (parallel): place the vertices each patch draws, with skirts on the edges where the
         // neighbour's level differs (equal levels share their edge vertices exactly: no crack).
-        List<PatchWork> kept = new ArrayList<>(work.values());
+        // Hidden patches stay in `work`: their neighbours' skirts do not change (and cannot be seen there).
+        List<PatchWork> kept = new ArrayList<>(work.values().stream().filter(w -> !w.hidden).toList());
         IntStream.range(0, kept.size()).parallel().forEach(i -> {
             PatchWork w = kept.get(i);
             long[] sides = {key(w.row0 - p, w.col0), key(w.row0, w.col0 + p), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p)};
@@ -239,13 +260,57 @@ public final class TerrainBuilder {
         }
         root.updateModelBound();
         root.updateGeometricState();
-        return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel);
+        return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled);
+    }
+
+    /**
+     * Marks the patches no panorama ray reaches (see {@link HorizonCulling}); returns how many. The
+     * drawn surface of a patch interpolates its samples, so their lowest and highest bound it.
+     */
+    private static int cull(List<PatchWork> patches, Mosaic mosaic, LocalFrame frame, double eyeAltitudeMetres,
+                            double refractionK, double cullBelowDeg) {
+        int p = PATCH_INTERVALS;
+        List<HorizonCulling.Bounds> bounds = IntStream.range(0, patches.size()).parallel().mapToObj(i -> {
+            PatchWork w = patches.get(i);
+            double[] ecef = new double[3], enu = new double[3];
+            double first = Double.NaN, min = 0, max = 0, far = 0;
+            for (int corner = 0; corner < 4; corner++) {
+                int r = Math.max(0, Math.min(mosaic.rows() - 1, w.row0 + (corner >> 1) * p));
+                int c = Math.max(0, Math.min(mosaic.cols() - 1, w.col0 + (corner & 1) * p));
+                Ellipsoid.toEcef(mosaic.latOfRow(r), mosaic.lonOfCol(c), 0, ecef);
+                frame.ecefToEnu(ecef[0], ecef[1], ecef[2], enu);
+                double az = Math.toDegrees(Math.atan2(enu[0], enu[1]));
+                if (Double.isNaN(first)) {
+                    first = az;
+                } else {
+                    double rel = az - first;
+                    rel -= 360 * Math.floor((rel + 180) / 360); // to [-180, 180)
+                    min = Math.min(min, rel);
+                    max = Math.max(max, rel);
+                }
+                // Horizontal distance in the eye's frame, a little under the ground distance: widen.
+                far = Math.max(far, Math.hypot(enu[0], enu[1]) * 1.001 + 1);
+            }
+            return new HorizonCulling.Bounds(first + min, first + max, w.nearestMetres, far,
+                    w.rawDeviations[LEVELS], w.rawDeviations[LEVELS + 1]);
+        }).toList();
+        boolean[] hidden = HorizonCulling.hidden(bounds, eyeAltitudeMetres, refractionK, cullBelowDeg,
+                HorizonCulling.DEFAULT_MARGIN_DEG);
+        int count = 0;
+        for (int i = 0; i < hidden.length; i++) {
+            patches.get(i).hidden = hidden[i];
+            count += hidden[i] ? 1 : 0;
+        }
+        return count;
     }
 
     private static final ThreadLocal<float[]> PATCH_HEIGHTS =
             ThreadLocal.withInitial(() -> new float[(PATCH_INTERVALS + 1) * (PATCH_INTERVALS + 1)]);
 
-    /** A patch's deviations per level measured on the mosaic, metres (rounded up to float). */
+    /**
+     * A patch's deviations per level measured on the mosaic, metres (rounded up to float), then its
+     * lowest and highest sample (metres): {@link #LEVELS} + 2 values.
+     */
     private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
         float[] heights = PATCH_HEIGHTS.get(); // reused: tens of thousands of patches per build
@@ -257,10 +322,17 @@ public final class TerrainBuilder {
             }
         }
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
-        float[] raw = new float[dev.length];
-        for (int l = 0; l < dev.length; l++) {
+        float[] raw = new float[LEVELS + 2];
+        for (int l = 0; l < LEVELS; l++) {
             raw[l] = (float) dev[l] < dev[l] ? Math.nextUp((float) dev[l]) : (float) dev[l];
         }
+        float lowest = Float.POSITIVE_INFINITY, highest = Float.NEGATIVE_INFINITY;
+        for (float h : heights) {
+            lowest = Math.min(lowest, h);
+            highest = Math.max(highest, h);
+        }
+        raw[LEVELS] = lowest;
+        raw[LEVELS + 1] = highest;
         return raw;
     }
 
@@ -293,7 +365,7 @@ public final class TerrainBuilder {
         int row0, col0, level;
         DeviationCache.Key cacheKey;
         float[] rawDeviations;
-        boolean cacheable, fromCache;
+        boolean cacheable, fromCache, hidden;
         double nearestMetres;
         double[] deviations;
         PatchMesh mesh;
