@@ -42,20 +42,16 @@ public final class Silhouettes {
         return jump > JUMP_RATIO * below;
     }
 
-    /** Darkens the silhouette pixels of a colour image in place. */
+    /** Darkens the silhouette pixels of a colour image in place (the test reads distances only). */
     public static void draw(int[] argb, float[] distance, int width, int height) {
-        boolean[] edge = new boolean[argb.length];
         IntStream.range(0, height).parallel().forEach(row -> {
-            for (int col = 0; col < width; col++) {
-                edge[row * width + col] = isEdge(distance, width, height, col, row);
+            for (int col = 0, i = row * width; col < width; col++, i++) {
+                if (isEdge(distance, width, height, col, row)) {
+                    int c = argb[i];
+                    int r = (int) (((c >> 16) & 0xff) * DARKEN), g = (int) (((c >> 8) & 0xff) * DARKEN), b = (int) ((c & 0xff) * DARKEN);
+                    argb[i] = (c & 0xff000000) | (r << 16) | (g << 8) | b;
+                }
             }
         });
-        for (int i = 0; i < argb.length; i++) {
-            if (edge[i]) {
-                int c = argb[i];
-                int r = (int) (((c >> 16) & 0xff) * DARKEN), g = (int) (((c >> 8) & 0xff) * DARKEN), b = (int) ((c & 0xff) * DARKEN);
-                argb[i] = (c & 0xff000000) | (r << 16) | (g << 8) | b;
-            }
-        }
     }
 }

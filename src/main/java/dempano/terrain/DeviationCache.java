@@ -39,7 +39,10 @@ public final class DeviationCache {
         };
     }
 
-    /** Hands each item the cached raw deviations of its key (metres, levels 0..6, no chord sag), where held. */
+    /**
+     * Hands each item the cached values of its key, where held: deviations per level (metres, no
+     * chord sag), then the patch's lowest and highest sample (metres).
+     */
     <T> void lookUp(List<T> items, Function<T, Key> key, BiConsumer<T, float[]> found) {
         synchronized (map) {
             for (T item : items) {

@@ -135,12 +135,12 @@ public final class TerrainBuilder {
         int nr = r1 - r0 + 1 + p, nc = c1 - c0 + 1 + p;
         double[] sinLat = new double[nr], cosLat = new double[nr], sinLon = new double[nc], cosLon = new double[nc];
         for (int r = 0; r < nr; r++) {
-            double phi = Math.toRadians(mosaic.latOfRow(Math.max(0, Math.min(mosaic.rows() - 1, r0 + r))));
+            double phi = Math.toRadians(mosaic.latOfRow(clampRow(mosaic, r0 + r)));
             sinLat[r] = Math.sin(phi);
             cosLat[r] = Math.cos(phi);
         }
         for (int c = 0; c < nc; c++) {
-            double lam = Math.toRadians(mosaic.lonOfCol(Math.max(0, Math.min(mosaic.cols() - 1, c0 + c))));
+            double lam = Math.toRadians(mosaic.lonOfCol(clampCol(mosaic, c0 + c)));
             sinLon[c] = Math.sin(lam);
             cosLon[c] = Math.cos(lam);
         }
@@ -275,8 +275,8 @@ public final class TerrainBuilder {
             double[] ecef = new double[3], enu = new double[3];
             double first = Double.NaN, min = 0, max = 0, far = 0;
             for (int corner = 0; corner < 4; corner++) {
-                int r = Math.max(0, Math.min(mosaic.rows() - 1, w.row0 + (corner >> 1) * p));
-                int c = Math.max(0, Math.min(mosaic.cols() - 1, w.col0 + (corner & 1) * p));
+                int r = clampRow(mosaic, w.row0 + (corner >> 1) * p);
+                int c = clampCol(mosaic, w.col0 + (corner & 1) * p);
                 Ellipsoid.toEcef(mosaic.latOfRow(r), mosaic.lonOfCol(c), 0, ecef);
                 frame.ecefToEnu(ecef[0], ecef[1], ecef[2], enu);
                 double az = Math.toDegrees(Math.atan2(enu[0], enu[1]));
@@ -315,10 +315,8 @@ public final class TerrainBuilder {
         int p = PATCH_INTERVALS;
         float[] heights = PATCH_HEIGHTS.get(); // reused: tens of thousands of patches per build
         for (int a = 0; a <= p; a++) {
-            int r = Math.max(0, Math.min(row0 + a, mosaic.rows() - 1));
             for (int b = 0; b <= p; b++) {
-                float h = mosaic.sample(r, Math.max(0, Math.min(col0 + b, mosaic.cols() - 1)));
-                heights[a * (p + 1) + b] = Float.isNaN(h) ? 0f : h; // NaN only beyond range
+                heights[a * (p + 1) + b] = drawnHeight(mosaic, row0 + a, col0 + b);
             }
         }
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
@@ -354,6 +352,21 @@ public final class TerrainBuilder {
             }
         }
         return true;
+    }
+
+    /** A row index held inside the mosaic: patches reaching beyond it repeat its edge (degenerate cells). */
+    private static int clampRow(Mosaic mosaic, int row) {
+        return Math.max(0, Math.min(mosaic.rows() - 1, row));
+    }
+
+    private static int clampCol(Mosaic mosaic, int col) {
+        return Math.max(0, Math.min(mosaic.cols() - 1, col));
+    }
+
+    /** The height drawn at a (clamped) sample, metres: sea level where no tile was loaded (only beyond range). */
+    private static float drawnHeight(Mosaic mosaic, int row, int col) {
+        float h = mosaic.sample(clampRow(mosaic, row), clampCol(mosaic, col));
+        return Float.isNaN(h) ? 0f : h;
     }
 
     private static long key(int row, int col) {
@@ -496,11 +509,10 @@ public final class TerrainBuilder {
             float[] positions = new float[n * 3], normals = new float[n * 3], elevations = new float[n * 2];
             double[] foot = new double[3], enu = new double[3];
             for (int gi = 0; gi < cs; gi++) {
-                int r = Math.max(0, Math.min(w.row0 + gi * step, mosaic.rows() - 1));
+                int r = clampRow(mosaic, w.row0 + gi * step);
                 for (int gj = 0; gj < cs; gj++) {
-                    int c = Math.max(0, Math.min(w.col0 + gj * step, mosaic.cols() - 1)), k = gi * cs + gj;
-                    float h = mosaic.sample(r, c);
-                    h = Float.isNaN(h) ? 0f : h; // NaN only beyond range
+                    int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
+                    float h = drawnHeight(mosaic, r, c);
                     position(r, c, h * exaggeration, 0, foot, enu, positions, 3 * k);
                     elevations[2 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
@@ -555,8 +567,7 @@ public final class TerrainBuilder {
                 }
                 for (int t = 0; t < cs; t++) {
                     int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
-                    int r = Math.max(0, Math.min(w.row0 + gi * step, mosaic.rows() - 1));
-                    int c = Math.max(0, Math.min(w.col0 + gj * step, mosaic.cols() - 1));
+                    int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
                     position(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, enu, positions, 3 * k);
                     System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
                     elevations[2 * k] = elevations[2 * v];
