@@ -121,7 +121,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         ViewCapture[] captures;
         long[] drawAndRead = new long[2];
         try {
-            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour(), drawAndRead);
+            // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
+            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour(),
+                    req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), drawAndRead);
         } finally {
             TerrainBuilder.destroyBuffers(terrain.root());
         }
@@ -133,13 +135,17 @@ public final class PanoramaRenderer implements AutoCloseable {
         t = afterRender;
 
         progress.accept("stitching");
-        float[][] inverseEyeDepth = new float[captures.length][];
-        for (int k = 0; k < captures.length; k++) {
-            inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
-        }
         int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
         float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
-        Stitcher.stitch(geometry, layout, captures, inverseEyeDepth, argb, distance);
+        if (req.distance()) {
+            float[][] inverseEyeDepth = new float[captures.length][];
+            for (int k = 0; k < captures.length; k++) {
+                inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
+            }
+            Stitcher.stitch(geometry, layout, captures, inverseEyeDepth, argb, distance);
+        } else {
+            Stitcher.stitchColour(geometry, layout, captures, argb, distance);
+        }
         t = lap(timings, "stitch", t);
         return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
                 layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,
@@ -187,7 +193,8 @@ public final class PanoramaRenderer implements AutoCloseable {
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
                 req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), near, far, views,
                 viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer(), lodErrorPx, triangles);
-        return new Panorama(geometry, argb, distance, layers, meta);
+        // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
+        return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
     }
 
     /**

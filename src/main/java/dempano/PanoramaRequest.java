@@ -35,12 +35,17 @@ import java.util.Set;
  *                          resolution everywhere). The GL path only: the reference is always exact.
  * @param colour            compute the colour image (default true); false renders distances only,
  *                          skipping colour shading, read-back and stitching
+ * @param distance          compute the distance map (default true); false renders colour only,
+ *                          skipping depth linearization and the distance interpolation (the
+ *                          silhouette lines and an auto elevation range then use the nearest view
+ *                          sample's range). Layers and summits need distances.
  */
 public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
                               double eyeHeightMetres, double rangeMetres, double pixelsPerDegree,
                               ElevationRange elevationRange, Refraction refraction, DepthMode depthMode,
                               Set<Layer> layers, double nearMetres, double supersampling, int views,
-                              MissingTilePolicy missingTiles, double lodErrorPx, boolean colour) {
+                              MissingTilePolicy missingTiles, double lodErrorPx, boolean colour,
+                              boolean distance) {
     public static final double DEFAULT_RANGE_METRES = 100_000;
     public static final double DEFAULT_PIXELS_PER_DEGREE = 20;
     public static final double DEFAULT_NEAR_METRES = 1;
@@ -67,6 +72,12 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
             throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
         }
         layers = Set.copyOf(layers);
+        if (!colour && !distance) {
+            throw new IllegalArgumentException("nothing to render: both colour and distance are switched off");
+        }
+        if (!distance && !layers.isEmpty()) {
+            throw new IllegalArgumentException("layers " + layers + " are computed from distances: they need the distance map");
+        }
         java.util.Objects.requireNonNull(elevationRange);
         java.util.Objects.requireNonNull(refraction);
         java.util.Objects.requireNonNull(depthMode);
@@ -81,83 +92,90 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
                 DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
                 DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.SEA_LEVEL, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true);
+                MissingTilePolicy.SEA_LEVEL, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true);
     }
 
     public PanoramaRequest withOffsetMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, v, altitudeMetres, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withAltitudeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, v, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withEyeHeightMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, v, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withRangeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, v, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withPixelsPerDegree(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres, v,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withElevationRange(ElevationRange v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withRefraction(Refraction v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withDepthMode(DepthMode v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withLayers(Set<Layer> v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withNearMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withSupersampling(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withViews(int v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withMissingTiles(MissingTilePolicy v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour, distance);
     }
 
     public PanoramaRequest withLodErrorPx(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
                 pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, v, colour);
+                missingTiles, v, colour, distance);
     }
 
     public PanoramaRequest withColour(boolean v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
                 pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, v);
+                missingTiles, lodErrorPx, v, distance);
+    }
+
+    /** Whether to compute the distance map; false = colour only (see the record's Javadoc). */
+    public PanoramaRequest withDistance(boolean v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
+                missingTiles, lodErrorPx, colour, v);
     }
 }

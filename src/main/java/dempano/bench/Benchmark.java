@@ -44,7 +44,11 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
 
     /** One measured configuration. */
     record Case(String name, String scene, String dem, double lat, double lon, double rangeKm, double ppd, double lodPx,
-                boolean colour, String renderer, String heap, boolean compare) {
+                boolean colour, boolean distance, String renderer, String heap, boolean compare) {
+        /** What the case renders: colour, distance or both. */
+        String outputs() {
+            return colour && distance ? "both" : colour ? "colour" : "distance";
+        }
     }
 
     /** What a child reports. */
@@ -69,26 +73,27 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         String s3 = srtm3.toString();
         double lat = 46.5, lon = 8.5;
         String scene3 = "3×3 SRTM3 (generated), 150 km";
-        cases.add(new Case("srtm3-150km", scene3, s3, lat, lon, 150, 20, 0.5, true, "opengl", "6g", true));
-        cases.add(new Case("srtm3-150km-full-res", scene3, s3, lat, lon, 150, 20, 0, true, "opengl", "6g", false));
+        cases.add(new Case("srtm3-150km", scene3, s3, lat, lon, 150, 20, 0.5, true, true, "opengl", "6g", true));
+        cases.add(new Case("srtm3-150km-full-res", scene3, s3, lat, lon, 150, 20, 0, true, true, "opengl", "6g", false));
         for (double lod : new double[] {0.25, 1, 2}) {
-            cases.add(new Case("srtm3-150km-lod-" + lod, scene3, s3, lat, lon, 150, 20, lod, true, "opengl", "6g", true));
+            cases.add(new Case("srtm3-150km-lod-" + lod, scene3, s3, lat, lon, 150, 20, lod, true, true, "opengl", "6g", true));
         }
-        cases.add(new Case("srtm3-150km-distance-only", scene3, s3, lat, lon, 150, 20, 0.5, false, "opengl", "6g", false));
-        cases.add(new Case("srtm3-150km-reference", scene3, s3, lat, lon, 150, 20, 0, true, "reference", "6g", false));
+        cases.add(new Case("srtm3-150km-distance-only", scene3, s3, lat, lon, 150, 20, 0.5, false, true, "opengl", "6g", false));
+        cases.add(new Case("srtm3-150km-colour-only", scene3, s3, lat, lon, 150, 20, 0.5, true, false, "opengl", "6g", false));
+        cases.add(new Case("srtm3-150km-reference", scene3, s3, lat, lon, 150, 20, 0, true, true, "reference", "6g", false));
         for (double r : new double[] {25, 50, 100, 200, 300}) {
             cases.add(new Case("range-" + (int) r + "km", "range curve (3×3 SRTM3 area, sea beyond)", s3, lat, lon, r, 20, 0.5,
-                    true, "opengl", "6g", false));
+                    true, true, "opengl", "6g", false));
         }
         for (double p : new double[] {10, 40}) {
-            cases.add(new Case("ppd-" + (int) p, "ppd curve (3×3 SRTM3, 150 km)", s3, lat, lon, 150, p, 0.5, true, "opengl",
+            cases.add(new Case("ppd-" + (int) p, "ppd curve (3×3 SRTM3, 150 km)", s3, lat, lon, 150, p, 0.5, true, true, "opengl",
                     "6g", false));
         }
         Path real = shared.resolve("dem");
         if (Files.isRegularFile(real.resolve("N43E006.hgt")) && Files.isRegularFile(real.resolve("N43E007.hgt"))) {
             String sceneP = "Provence, real SRTM3 (N43E006/N43E007), 100 km";
-            cases.add(new Case("provence-100km", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0.5, true, "opengl", "6g", true));
-            cases.add(new Case("provence-100km-reference", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0, true,
+            cases.add(new Case("provence-100km", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0.5, true, true, "opengl", "6g", true));
+            cases.add(new Case("provence-100km-reference", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0, true, true,
                     "reference", "6g", false));
         } else {
             System.err.println("bench: " + real + " lacks N43E006/N43E007: the real-tile scene is skipped");
@@ -96,7 +101,7 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         if (only == null || only.stream().anyMatch(n -> n.startsWith("srtm1"))) {
             Path srtm1 = FractalRelief.ensure(demCache.resolve("srtm1"), 44, 6, 5, 5, HgtTile.SRTM1_SAMPLES);
             cases.add(new Case("srtm1-300km", "5×5 SRTM1 (generated), 300 km (sea beyond the 5×5)", srtm1.toString(), 46.5, 8.5,
-                    300, 20, 0.5, true, "opengl", "6g", false));
+                    300, 20, 0.5, true, true, "opengl", "6g", false));
         }
         if (only != null) {
             cases.removeIf(c -> !only.contains(c.name()));
@@ -156,13 +161,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         DemDirectory dem = new DemDirectory(Path.of(c.dem()), 64);
         boolean reference = c.renderer().equals("reference");
         PanoramaRequest a = PanoramaRequest.at(c.lat(), c.lon()).withRangeMetres(c.rangeKm() * 1000)
-                .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour());
+                .withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx()).withColour(c.colour()).withDistance(c.distance());
         // Warm: other viewpoints in the same area, each 2 km north-east of the one before.
         PanoramaRequest[] warmAt = new PanoramaRequest[3];
         for (int i = 0; i < warmAt.length; i++) {
             warmAt[i] = PanoramaRequest.at(c.lat() + 0.0127 * (i + 1), c.lon() + 0.0185 * (i + 1))
                     .withRangeMetres(c.rangeKm() * 1000).withPixelsPerDegree(c.ppd()).withLodErrorPx(c.lodPx())
-                    .withColour(c.colour());
+                    .withColour(c.colour()).withDistance(c.distance());
         }
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
             double openMillis = (System.nanoTime() - t0) / 1e6;
@@ -257,23 +262,25 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
                 + "(tiles and patch deviations cached; the error is that of the last one).\n"
                 + "- Stages (ms): context, tiles (load + mosaic), mesh (level of detail, vertex placement), upload (scene to GL,\n"
                 + "  culling), draw (8 views, to glFinish), readback, stitch; write = PNG + .npy + distance PNG + JSON.\n"
+                + "- Outputs: both = colour image and distance map; distance = distances only (no shading, colour read-back or\n"
+                + "  colour stitching); colour = colour only (no depth linearization or distance interpolation).\n"
                 + "- Peak memory: the process's peak resident set (VmHWM: heap, native buffers and the GL driver).\n"
                 + "- LOD: bound on the screen error of simplified terrain, panorama pixels (0 = full resolution).\n"
                 + "- Error: the warm panorama against the CPU reference on the full-resolution surface (relative distance error).\n"
                 + "- Generated relief: `dempano.bench.FractalRelief` (ridged fractal noise, rough at every scale), as .hgt files.\n\n");
-        md.append("| case | scene | renderer | ppd | LOD px | colour | cold s | warm s | warm stages ms | write ms | peak GB | triangles | median err | p99 err | skyline px | reference s |\n");
+        md.append("| case | scene | renderer | ppd | LOD px | outputs | cold s | warm s | warm stages ms | write ms | peak GB | triangles | median err | p99 err | skyline px | reference s |\n");
         md.append("|---|---|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
         for (int i = 0; i < cases.size(); i++) {
             Case c = cases.get(i);
             Result r = results.get(i);
             if (r.error() != null) {
                 md.append(String.format(Locale.ROOT, "| %s | %s | %s | %.0f | %s | %s | failed: %s |||||||||%n", c.name(), c.scene(),
-                        c.renderer(), c.ppd(), f(c.lodPx(), "%.2g"), c.colour() ? "yes" : "no", r.error().replace('|', '/')));
+                        c.renderer(), c.ppd(), f(c.lodPx(), "%.2g"), c.outputs(), r.error().replace('|', '/')));
                 continue;
             }
             md.append(String.format(Locale.ROOT, "| %s | %s | %s | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |%n",
                     c.name(), c.scene(), c.renderer(), c.ppd(), c.renderer().equals("reference") ? "exact" : f(c.lodPx(), "%.2g"),
-                    c.colour() ? "yes" : "no", f(r.coldMillis() / 1e3, "%.2f"), f(r.warmMillis() / 1e3, "%.2f"),
+                    c.outputs(), f(r.coldMillis() / 1e3, "%.2f"), f(r.warmMillis() / 1e3, "%.2f"),
                     stages(r.warmStages()), f(r.writeMillis(), "%.0f"), f(r.peakRssBytes() / 1e9, "%.2f"),
                     r.triangles() == 0 ? "–" : String.format(Locale.ROOT, "%.2f M", r.triangles() / 1e6),
                     f(r.medianRel() * 100, "%.1e %%"), f(r.p99Rel() * 100, "%.2g %%"), f(r.skylineMeanPx(), "%.3f"),

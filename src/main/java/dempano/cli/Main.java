@@ -92,6 +92,8 @@ public final class Main implements Callable<Integer> {
     double lodErrorPx;
     @Option(names = "--no-colour", description = "Distances only: skip shading and the colour image (P.png, P-labels.png).")
     boolean noColour;
+    @Option(names = "--no-distance", description = "Colour only: skip the distance map (P-distance.*); its silhouette lines come from the nearest view samples. Not with --layers or --summits.")
+    boolean noDistance;
     @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
     String missingTiles;
 
@@ -156,7 +158,7 @@ public final class Main implements Callable<Integer> {
                 .withElevationRange(ElevationRange.parse(elevationRange)).withRefraction(new Refraction(refraction))
                 .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
                 .withSupersampling(supersampling).withViews(views).withMissingTiles(policy)
-                .withLodErrorPx(lodErrorPx).withColour(!noColour);
+                .withLodErrorPx(lodErrorPx).withColour(!noColour).withDistance(!noDistance);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
@@ -172,6 +174,9 @@ public final class Main implements Callable<Integer> {
                             + labelOrder);
                 });
         dempano.summits.SummitList summitList = null;
+        if (summitsFile != null && noDistance) {
+            throw new IllegalArgumentException("--summits needs the distance map (visibility is decided from it): drop --no-distance");
+        }
         if (summitsFile != null) {
             // Read before rendering: a bad list fails fast.
             summitList = dempano.summits.SummitReader.read(summitsFile, lenientSummits);

@@ -16,8 +16,8 @@ import java.util.Map;
 import javax.imageio.ImageIO;
 
 /**
- * Writes a panorama's files for a prefix P: {@code P.png} (when it has colour), {@code P-distance.npy} (or {@code .pfm}),
- * {@code P-distance.png}, {@code P-<layer>.npy} and {@code P.json}. Each file is written atomically.
+ * Writes a panorama's files for a prefix P: {@code P.png} (when it has colour), {@code P-distance.npy} (or {@code .pfm})
+ * and {@code P-distance.png} (when it has distances), {@code P-<layer>.npy} and {@code P.json}. Each file is written atomically.
  */
 public final class PanoramaWriter {
     private PanoramaWriter() {
@@ -35,17 +35,19 @@ public final class PanoramaWriter {
             });
             files.add(png);
         }
-        Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
-        if (pfm) {
-            FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
-        } else {
-            FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+        if (p.hasDistance()) {
+            Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
+            if (pfm) {
+                FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+            } else {
+                FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+            }
+            files.add(dist);
+            Path distPng = Path.of(prefix + "-distance.png");
+            AtomicFiles.write(distPng, out -> ImageIO.write(
+                    DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
+            files.add(distPng);
         }
-        files.add(dist);
-        Path distPng = Path.of(prefix + "-distance.png");
-        AtomicFiles.write(distPng, out -> ImageIO.write(
-                DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
-        files.add(distPng);
         for (Layer l : p.layers()) {
             Path f = Path.of(prefix + "-" + l.fileName() + ".npy");
             FloatArrayWriter.writeNpy(f, p.layerBuffer(l), p.heightPx(), p.widthPx());
@@ -88,7 +90,8 @@ public final class PanoramaWriter {
         doc.put("farMetres", Double.isInfinite(m.farMetres()) ? "infinite" : m.farMetres());
         doc.put("views", m.views());
         doc.put("viewSizePx", List.of(m.viewWidthPx(), m.viewHeightPx()));
-        doc.put("distanceUnits", "metres, float32, straight line from the eye; sky = +Infinity");
+        doc.put("distanceUnits", p.hasDistance() ? "metres, float32, straight line from the eye; sky = +Infinity"
+                : "not rendered (colour only)");
         doc.put("tilesUsed", m.tilesUsed());
         doc.put("tilesMissing", m.tilesMissing());
         doc.put("warnings", m.warnings());

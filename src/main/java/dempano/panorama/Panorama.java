@@ -19,12 +19,18 @@ public final class Panorama {
     private final Map<Layer, float[]> layers;
     private final PanoramaMetadata metadata;
 
-    /** @param argb colour, or null when only distances were rendered */
+    /**
+     * @param argb           colour, or null when only distances were rendered
+     * @param distanceMetres distances, or null when only colour was rendered
+     */
     public Panorama(PanoramaGeometry geometry, int[] argb, float[] distanceMetres, Map<Layer, float[]> layers,
                     PanoramaMetadata metadata) {
         this.geometry = Objects.requireNonNull(geometry);
         int n = geometry.widthPx() * geometry.heightPx();
-        if ((argb != null && argb.length != n) || distanceMetres.length != n) {
+        if (argb == null && distanceMetres == null) {
+            throw new IllegalArgumentException("a panorama needs colour, distances or both");
+        }
+        if ((argb != null && argb.length != n) || (distanceMetres != null && distanceMetres.length != n)) {
             throw new IllegalArgumentException("arrays do not match " + geometry.widthPx() + "×" + geometry.heightPx());
         }
         this.argb = argb;
@@ -61,22 +67,35 @@ public final class Panorama {
         return geometry.elevationOfRow(row);
     }
 
-    /** Distance in metres of the pixel at (column, row); +∞ for sky. */
+    /** Distance in metres of the pixel at (column, row); +∞ for sky. Throws if distances were not rendered. */
     public float distanceMetres(int column, int row) {
-        return distanceMetres[row * widthPx() + column];
+        return distances()[row * widthPx() + column];
+    }
+
+    /** Whether the distance map was rendered (see {@code PanoramaRequest.withDistance}). */
+    public boolean hasDistance() {
+        return distanceMetres != null;
+    }
+
+    private float[] distances() {
+        if (distanceMetres == null) {
+            throw new IllegalStateException("this panorama was rendered without distances (colour only)");
+        }
+        return distanceMetres;
     }
 
     /**
      * Distance in metres seen in a direction (the pixel containing it); +∞ for sky, NaN outside the
-     * panorama's elevation range.
+     * panorama's elevation range. Throws if distances were not rendered.
      */
     public double distanceAt(double azimuthDeg, double elevationDeg) {
+        float[] d = distances();
         int col = (int) Math.floor(geometry.columnOf(azimuthDeg)) % widthPx();
         double row = geometry.rowOf(elevationDeg);
         if (!(row >= 0 && row < heightPx())) {
             return Double.NaN;
         }
-        return distanceMetres[(int) row * widthPx() + col];
+        return d[(int) row * widthPx() + col];
     }
 
     /** Whether the colour image was rendered (see {@code PanoramaRequest.withColour}). */
@@ -96,9 +115,9 @@ public final class Panorama {
         return argb;
     }
 
-    /** A copy of the distance array (row-major, metres). */
+    /** A copy of the distance array (row-major, metres); throws if distances were not rendered. */
     public float[] distanceArray() {
-        return distanceMetres.clone();
+        return distances().clone();
     }
 
     /** The layers rendered on request. */
@@ -122,9 +141,9 @@ public final class Panorama {
         return img;
     }
 
-    /** Read-only view of the distances for writers (no copy). */
+    /** Read-only view of the distances for writers (no copy); throws if distances were not rendered. */
     public java.nio.FloatBuffer distanceBuffer() {
-        return java.nio.FloatBuffer.wrap(distanceMetres).asReadOnlyBuffer();
+        return java.nio.FloatBuffer.wrap(distances()).asReadOnlyBuffer();
     }
 
     /** Read-only view of a layer for writers (no copy). */
@@ -139,7 +158,7 @@ public final class Panorama {
     /**
      * The summits of a list within this panorama's range: where each falls (azimuth, elevation
      * angle, pixel), how far it is, and whether it is seen
-     * ({@link dempano.summits.SummitProjector} documents the tolerance).
+     * ({@link dempano.summits.SummitProjector} documents the tolerance). Needs the distance map.
      */
     public java.util.List<dempano.summits.SummitSighting> summits(dempano.summits.SummitList list) {
         return dempano.summits.SummitProjector.project(this, list);

@@ -22,7 +22,7 @@ public final class Silhouettes {
     }
 
     /** Whether pixel (col, row) lies on a silhouette; row 0 at the top. */
-    static boolean isEdge(float[] distance, int width, int height, int col, int row) {
+    public static boolean isEdge(float[] distance, int width, int height, int col, int row) {
         if (row == 0) {
             return false;
         }

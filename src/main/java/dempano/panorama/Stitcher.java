@@ -55,6 +55,25 @@ public final class Stitcher {
      */
     public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                               int[] argbOut, float[] rangeOut) {
+        resample(g, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), argbOut, rangeOut);
+    }
+
+    /**
+     * Colour only: colour as {@link #stitch} makes it, and for each pixel the range of the nearest
+     * view sample, metres (+∞ for sky), taken as read back, with no linearization or interpolation.
+     * That range belongs to a ray up to half a view pixel away: enough to find skylines and
+     * occlusion edges ({@link Silhouettes}) and to crop to the terrain, not a distance map.
+     *
+     * @param captures views whose depth is the shader's range target (metres, ≤ 0 or ∞ for sky)
+     */
+    public static void stitchColour(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, int[] argbOut,
+                                    float[] nearestRangeOut) {
+        resample(g, layout, captures, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
+    }
+
+    /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
+    private static void resample(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+                                 int[] argbOut, float[] rangeOut) {
         int width = g.widthPx();
         // Per column: its view, x in the view, and the secant of its angle off the view's axis;
         // a row's y in a view is then tan(elevation)·secant (see ViewLayout.project).
@@ -84,7 +103,8 @@ public final class Stitcher {
                 if (argbOut != null) {
                     argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
                 }
-                rangeOut[i] = (float) range(inverseEyeDepth[view], layout, p, scratch);
+                rangeOut[i] = inverseEyeDepth == null ? nearestRange(captures[view].depth(), layout, p[0], p[1])
+                        : (float) range(inverseEyeDepth[view], layout, p, scratch);
             }
         });
     }
@@ -110,6 +130,11 @@ public final class Stitcher {
             b += w * (rgba[o + 2] & 0xff);
         }
         return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
+    }
+
+    private static float nearestRange(float[] range, ViewLayout l, double px, double py) {
+        float d = range[clampY(l, (int) Math.round(py)) * l.widthPx() + clampX(l, (int) Math.round(px))];
+        return d > 0 ? d : Float.POSITIVE_INFINITY; // nothing drawn there: sky
     }
 
     /** Largest second difference of 1/z, relative to the adjacent first differences, that still counts as one plane. */

@@ -192,10 +192,25 @@ public final class OffscreenRenderer {
      */
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release, boolean colour, long[] drawAndReadNanos) {
+        return render(scene, layout, mode, nearMetres, farMetres, release, colour, mode == DepthMode.SHADER_RANGE,
+                drawAndReadNanos);
+    }
+
+    /**
+     * As above; with {@code readRangeTarget} the captures' depth is the shader's range target
+     * whatever the depth mode (the mode then only chooses the projection and depth test), else the
+     * target the mode reads ({@link ViewCapture#depth()}).
+     */
+    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
+                                boolean release, boolean colour, boolean readRangeTarget, long[] drawAndReadNanos) {
         if (closed) {
             throw new IllegalStateException("renderer is closed");
         }
-        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release, colour, drawAndReadNanos));
+        if (mode == DepthMode.SHADER_RANGE && !readRangeTarget) {
+            throw new IllegalArgumentException("the shader-range mode reads the range target");
+        }
+        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release,
+                colour, readRangeTarget, drawAndReadNanos));
         try {
             return f.get();
         } catch (InterruptedException e) {
@@ -301,7 +316,7 @@ public final class OffscreenRenderer {
         }
 
         ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release,
-                                  boolean withColour, long[] nanos) {
+                                  boolean withColour, boolean readRangeTarget, long[] nanos) {
             int w = layout.widthPx(), h = layout.heightPx();
             boolean reversed = mode.reversedZ();
             FrameBuffer target = framebuffer(w, h, reversed);
@@ -368,7 +383,7 @@ public final class OffscreenRenderer {
                         colour.get(rgba);
                     }
                     depth.clear();
-                    if (mode == DepthMode.SHADER_RANGE) {
+                    if (readRangeTarget) {
                         GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
                         GL11.glReadPixels(0, 0, w, h, GL11.GL_RED, GL11.GL_FLOAT, depth);
                     } else {

@@ -36,8 +36,17 @@ public final class SummitProjector {
     private SummitProjector() {
     }
 
-    /** Every summit of the list within the panorama's range, in list order. */
+    /**
+     * Every summit of the list within the panorama's range, in list order.
+     *
+     * @throws IllegalStateException when the panorama was rendered without distances (colour only):
+     *                               visibility is decided from them
+     */
     public static List<SummitSighting> project(Panorama p, SummitList list) {
+        if (!p.hasDistance()) {
+            throw new IllegalStateException("summit visibility is decided from distances: this panorama was rendered"
+                    + " without them (colour only)");
+        }
         PanoramaMetadata m = p.metadata();
         LocalFrame eye = new LocalFrame(m.latDeg(), m.lonDeg(), m.eyeAltitudeMetres());
         Refraction refraction = new Refraction(m.refractionCoefficient());

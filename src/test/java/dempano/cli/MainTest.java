@@ -43,6 +43,9 @@ class MainTest {
             "--lat abc --lon 8 --dem-dir .|Invalid value",
             "--bogus|Unknown option",
             "--lat 46 --lon 8 --dem-dir . --missing-tiles maybe|--missing-tiles must be",
+            "--lat 46 --lon 8 --dem-dir . --no-colour --no-distance|nothing to render",
+            "--lat 46 --lon 8 --dem-dir . --no-distance --layers elevation|need the distance map",
+            "--lat 46 --lon 8 --dem-dir . --no-distance --summits peaks.txt|--summits needs the distance map",
     })
     void badArgumentsExitTwoWithAMessage(String args, String expected) {
         String[] r = run(args.split(" "));

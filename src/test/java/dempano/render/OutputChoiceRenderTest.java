@@ -1,0 +1,140 @@
+package dempano.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.Synthetic;
+import dempano.dem.InMemoryDem;
+import dempano.io.PanoramaWriter;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Layer;
+import dempano.panorama.Panorama;
+import dempano.panorama.Silhouettes;
+import dempano.summits.SummitList;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.function.DoubleBinaryOperator;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Colour only and distances only against the full rendering of the same request: each skips the
+ * other's work and gives the same pixels of what it keeps. Colour only finds its silhouette lines
+ * from the nearest view samples; they must be the full rendering's lines, also on a plain seen at
+ * grazing incidence (where distances triple from row to row and a coarse test would draw false lines).
+ */
+class OutputChoiceRenderTest {
+    static final double LAT = 46.5, LON = 8.5;
+    static InMemoryDem rugged, plain;
+    static PanoramaRenderer gl;
+
+    @BeforeAll
+    static void open() {
+        rugged = Synthetic.dem(LevelOfDetailRenderTest.RUGGED, 46, 8, 1, 1);
+        DoubleBinaryOperator flat = (lat, lon) -> 500;
+        plain = Synthetic.dem(flat, 46, 8, 1, 1);
+        gl = PanoramaRenderer.open(rugged);
+    }
+
+    @AfterAll
+    static void close() {
+        gl.close();
+    }
+
+    static PanoramaRequest request(double eyeHeightMetres) {
+        return PanoramaRequest.at(LAT, LON).withRangeMetres(45_000).withEyeHeightMetres(eyeHeightMetres)
+                .withPixelsPerDegree(10).withElevationRange(new ElevationRange(-20, 15, false));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"rugged relief, eye 30 m", "plain at grazing incidence, eye 3 m"})
+    void colourOnlyDrawsTheFullRenderingsPictureWithItsSilhouettes(String scene) {
+        boolean onPlain = scene.startsWith("plain");
+        try (PanoramaRenderer r = PanoramaRenderer.open(onPlain ? plain : rugged)) {
+            PanoramaRequest req = request(onPlain ? 3 : 30);
+            Panorama full = r.render(req);
+            Panorama colourOnly = r.render(req.withDistance(false));
+            assertTrue(colourOnly.hasColour());
+            assertFalse(colourOnly.hasDistance());
+            assertThrows(IllegalStateException.class, () -> colourOnly.distanceAt(90, 0));
+            assertThrows(IllegalStateException.class, colourOnly::distanceArray);
+            assertEquals(full.widthPx(), colourOnly.widthPx());
+            assertEquals(full.heightPx(), colourOnly.heightPx());
+
+            float[] d = full.distanceArray();
+            int w = full.widthPx(), h = full.heightPx(), edges = 0, differing = 0, differingOffEdges = 0;
+            for (int row = 0; row < h; row++) {
+                for (int col = 0; col < w; col++) {
+                    boolean edge = Silhouettes.isEdge(d, w, h, col, row);
+                    edges += edge ? 1 : 0;
+                    if (full.argb(col, row) != colourOnly.argb(col, row)) {
+                        differing++;
+                        // A pixel that differs and is no edge of the full rendering is a false line in colour only,
+                        // unless it neighbours an edge (the nearest sample may put an edge a row off).
+                        if (!edge && !(row > 0 && Silhouettes.isEdge(d, w, h, col, row - 1))
+                                && !(row + 1 < h && Silhouettes.isEdge(d, w, h, col, row + 1))) {
+                            differingOffEdges++;
+                        }
+                    }
+                }
+            }
+            assertTrue(edges >= w, "at least the skyline is an edge in every column: " + edges);
+            // Both images come from the same colour samples: they differ only where the lines differ.
+            assertTrue(differing <= 0.05 * edges, differing + " pixels differ, " + edges + " silhouette pixels");
+            // Measured: rugged 158 of 5255 differ, 37 of them away from edges; the plain 0 of 3600.
+            assertTrue(differingOffEdges <= 0.015 * edges, differingOffEdges + " differing pixels away from any edge");
+        }
+    }
+
+    @Test
+    void distanceOnlyGivesTheFullRenderingsDistances() {
+        PanoramaRequest req = request(30);
+        Panorama full = gl.render(req);
+        Panorama distanceOnly = gl.render(req.withColour(false));
+        assertFalse(distanceOnly.hasColour());
+        assertThrows(IllegalStateException.class, distanceOnly::image);
+        float[] a = full.distanceArray(), b = distanceOnly.distanceArray();
+        int differing = 0;
+        for (int i = 0; i < a.length; i++) {
+            differing += Float.compare(a[i], b[i]) != 0 ? 1 : 0;
+        }
+        assertEquals(0, differing, "distances do not depend on whether colour is drawn");
+    }
+
+    @Test
+    void colourOnlyWritesThePictureAndMetadataAndNoDistanceFiles(@TempDir Path dir) throws Exception {
+        Panorama p = gl.render(request(30).withDistance(false));
+        List<Path> files = PanoramaWriter.write(p, dir.resolve("p").toString(), false);
+        List<String> names = new ArrayList<>();
+        files.forEach(f -> names.add(f.getFileName().toString()));
+        assertEquals(List.of("p.png", "p.json"), names);
+        assertTrue(Files.readString(dir.resolve("p.json")).contains("not rendered (colour only)"));
+        assertNotNull(javax.imageio.ImageIO.read(dir.resolve("p.png").toFile()));
+        SummitList none = new SummitList("none", List.of(), List.of());
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> p.summits(none));
+        assertTrue(e.getMessage().contains("without them"), e.getMessage());
+    }
+
+    @Test
+    void requestsThatWouldRenderNothingOrNeedMissingDistancesAreRefused() {
+        PanoramaRequest req = request(30);
+        IllegalArgumentException nothing = assertThrows(IllegalArgumentException.class,
+                () -> req.withColour(false).withDistance(false));
+        assertTrue(nothing.getMessage().contains("nothing to render"), nothing.getMessage());
+        IllegalArgumentException layers = assertThrows(IllegalArgumentException.class,
+                () -> req.withLayers(EnumSet.of(Layer.ELEVATION)).withDistance(false));
+        assertTrue(layers.getMessage().contains("need the distance map"), layers.getMessage());
+    }
+}
