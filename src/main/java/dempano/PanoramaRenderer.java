@@ -16,6 +16,7 @@ import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
 import dempano.render.OffscreenRenderer;
 import dempano.terrain.DeviationCache;
+import dempano.terrain.MeshCache;
 import dempano.terrain.TerrainBuilder;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -42,6 +43,9 @@ public final class PanoramaRenderer implements AutoCloseable {
     private final OffscreenRenderer gl;
     /** Patch deviations of this DEM source, kept across renders (level of detail costs a lookup then). */
     private final DeviationCache deviations = new DeviationCache();
+    /** Fine patches' geometries with their GL buffers, kept across renders; one render uses it at a time. */
+    private final MeshCache meshes = new MeshCache();
+    private final java.util.concurrent.locks.ReentrantLock meshLock = new java.util.concurrent.locks.ReentrantLock();
 
     private PanoramaRenderer(DemSource dem, OffscreenRenderer.Handle handle) {
         this.dem = dem;
@@ -107,25 +111,42 @@ public final class PanoramaRenderer implements AutoCloseable {
         // Terrain wholly below the lowest view row the stitcher samples (the bottom row's 4×4
         // neighbourhood reaches two view pixels lower) is left out with what nearer terrain hides.
         double cullBelowDeg = er.bottomDeg() - 3 / req.pixelsPerDegree();
-        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
-                req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, cullBelowDeg);
-        t = lap(timings, "mesh", t);
+        // The mesh cache's geometries can be in one scene at a time: a concurrent render builds its own.
+        boolean withMeshCache = meshLock.tryLock();
+        try {
+            TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
+                    req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null, cullBelowDeg);
+            t = lap(timings, "mesh", t);
+            return renderTerrain(req, mosaic, eye, er, terrain, timings, t, progress);
+        } finally {
+            if (withMeshCache) {
+                meshLock.unlock();
+            }
+        }
+    }
 
+    private Panorama renderTerrain(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ElevationRange er,
+                                   TerrainBuilder.Terrain terrain, Map<String, Double> timings, long t,
+                                   Consumer<String> progress) {
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
         progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
-                + " (" + terrain.triangles() / 1_000_000.0 + " M triangles)");
+                + " (" + terrain.triangles() / 1_000_000.0 + " M triangles, " + terrain.reusedPatches()
+                + " patches reused)");
         ViewCapture[] captures;
         long[] drawAndRead = new long[2];
         try {
             // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
-            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, true, req.colour(),
+            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, false, req.colour(),
                     req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), drawAndRead);
         } finally {
-            TerrainBuilder.destroyBuffers(terrain.root());
+            terrain.root().detachAllChildren();
+            List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
+            released.addAll(terrain.evicted());
+            gl.release(released);
         }
         long afterRender = System.nanoTime();
         // "render" splits into drawing and reading back; what remains (scene upload, culling) is "upload".
@@ -237,7 +258,13 @@ public final class PanoramaRenderer implements AutoCloseable {
     @Override
     public void close() {
         if (handle != null) {
-            handle.close();
+            meshLock.lock();
+            try {
+                gl.release(meshes.clear());
+            } finally {
+                meshLock.unlock();
+                handle.close();
+            }
         }
     }
 

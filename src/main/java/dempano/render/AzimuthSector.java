@@ -1,6 +1,7 @@
 package dempano.render;
 
 import com.jme3.bounding.BoundingBox;
+import com.jme3.scene.Geometry;
 import com.jme3.scene.Mesh;
 
 /** The azimuths (degrees clockwise from north) under which a mesh's bounding box is seen from the origin. */
@@ -8,9 +9,16 @@ final class AzimuthSector {
     private AzimuthSector() {
     }
 
-    /** {fromDeg, spanDeg}, or null when the box surrounds the eye (seen in every direction). */
-    static double[] of(Mesh mesh) {
-        mesh.updateBound();
+    /**
+     * {fromDeg, spanDeg}, or null when the box surrounds the eye (seen in every direction). The
+     * bound of a terrain geometry ({@link dempano.terrain.TerrainBuilder#EYE_BOUND}) is taken as set;
+     * any other mesh's is computed from its vertices, eye-relative.
+     */
+    static double[] of(Geometry g) {
+        Mesh mesh = g.getMesh();
+        if (g.getUserData(dempano.terrain.TerrainBuilder.EYE_BOUND) == null) {
+            mesh.updateBound();
+        }
         BoundingBox b = (BoundingBox) mesh.getBound();
         double x0 = b.getCenter().x - b.getXExtent(), x1 = b.getCenter().x + b.getXExtent();
         double z0 = b.getCenter().z - b.getZExtent(), z1 = b.getCenter().z + b.getZExtent();

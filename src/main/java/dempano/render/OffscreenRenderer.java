@@ -225,6 +225,31 @@ public final class OffscreenRenderer {
         }
     }
 
+    /**
+     * Frees the GL buffers of geometries no longer drawn, then their native memory (on the GL
+     * thread; returns when done).
+     */
+    public void release(java.util.Collection<? extends Spatial> parts) {
+        if (parts.isEmpty() || closed) {
+            return;
+        }
+        Future<Void> f = app.enqueue(() -> {
+            for (Spatial s : parts) {
+                GlApp.deleteGlBuffers(app.getRenderer(), s);
+                dempano.terrain.TerrainBuilder.destroyBuffers(s);
+            }
+            return null;
+        });
+        try {
+            f.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while releasing buffers", e);
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("releasing buffers failed: " + e.getCause(), e.getCause());
+        }
+    }
+
     private void close() {
         if (!closed) {
             closed = true;
@@ -346,7 +371,7 @@ public final class OffscreenRenderer {
             });
             double[][] sectors = new double[geometries.size()][];
             for (int i = 0; i < sectors.length; i++) {
-                sectors[i] = AzimuthSector.of(geometries.get(i).getMesh());
+                sectors[i] = AzimuthSector.of(geometries.get(i));
             }
             ViewCapture[] out = new ViewCapture[layout.views()];
             ByteBuffer colour = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder());

@@ -57,9 +57,12 @@ public final class TerrainBuilder {
      *
      * @param patchesPerLevel patches drawn at each level (index = level, step 2^level)
      * @param hiddenPatches   patches within range left out as hidden ({@link HorizonCulling})
+     * @param reusedPatches   patches whose geometry came from the {@link MeshCache}
+     * @param transientParts  geometries made for this build only: release their buffers after drawing
+     * @param evicted         geometries the mesh cache let go: release their buffers too
      */
     public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel,
-                          int hiddenPatches) {
+                          int hiddenPatches, int reusedPatches, List<Geometry> transientParts, List<Geometry> evicted) {
     }
 
     /**
@@ -110,9 +113,20 @@ public final class TerrainBuilder {
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
                                 double cullBelowDeg) {
+        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, cache,
+                null, cullBelowDeg);
+    }
+
+    /**
+     * As above, taking the geometry of fine patches (levels below {@link #MERGED_LEVEL}) from
+     * {@code meshes} where it holds them and adding those it lacks (null = every geometry is made for
+     * this build and listed in {@link Terrain#transientParts()}). Cached geometries are shared with
+     * later builds: draw one build's terrain before making the next.
+     */
+    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
+                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
+                                MeshCache meshes, double cullBelowDeg) {
         LocalFrame frame = eye.eyeFrame();
-        double[] eyeFoot = new double[3];
-        Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
         double eyeRow = mosaic.rowOf(eye.latDeg()), eyeCol = mosaic.colOf(eye.lonDeg());
         // Cells of the mosaic that can lie within range (a generous box; exact cut later). Rows are
         // shortest (metres) on the side nearer the pole: take the smaller cosine, as a lower bound.
@@ -144,7 +158,7 @@ public final class TerrainBuilder {
             sinLon[c] = Math.sin(lam);
             cosLon[c] = Math.cos(lam);
         }
-        Placer placer = new Placer(mosaic, frame, eyeFoot, refraction, r0, c0, sinLat, cosLat, sinLon, cosLon, exaggeration);
+        Placer placer = new Placer(mosaic, r0, c0, sinLat, cosLat, sinLon, cosLon, exaggeration);
 
         List<PatchWork> candidates = new ArrayList<>();
         for (int pr = r0; pr < r1; pr += p) {
@@ -207,29 +221,44 @@ public final class TerrainBuilder {
                 work.put(key(w.row0, w.col0), w);
             }
         }
-        // Pass 2 (parallel): place the vertices each patch draws, with skirts on the edges where the
-        // neighbour's level differs (equal levels share their edge vertices exactly: no crack).
-        // Hidden patches stay in `work`: their neighbours' skirts do not change (and cannot be seen there).
+        // Pass 2: skirts on the edges where the neighbour's level differs (equal levels share their
+        // edge vertices exactly: no crack). Hidden patches stay in `work`: their neighbours' skirts do
+        // not change (and cannot be seen there). A patch whose geometry is cached is not placed again.
         List<PatchWork> kept = new ArrayList<>(work.values().stream().filter(w -> !w.hidden).toList());
-        IntStream.range(0, kept.size()).parallel().forEach(i -> {
-            PatchWork w = kept.get(i);
+        java.util.Set<MeshCache.Key> inUse = new java.util.HashSet<>();
+        for (PatchWork w : kept) {
             long[] sides = {key(w.row0 - p, w.col0), key(w.row0, w.col0 + p), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p)};
-            double[] skirts = new double[4]; // north, east, south, west
+            w.skirts = new double[4]; // north, east, south, west
             for (int e = 0; e < 4; e++) {
                 PatchWork n = work.get(sides[e]);
                 if (n != null && n.level != w.level) {
-                    skirts[e] = w.errorMetres() + n.errorMetres() + 0.5;
+                    w.skirts[e] = w.errorMetres() + n.errorMetres() + 0.5;
                 }
             }
-            w.mesh = placer.mesh(w, skirts);
-        });
+            if (meshes != null && w.cacheable && w.level < MERGED_LEVEL) {
+                w.meshKey = new MeshCache.Key(mosaic.intervalsPerDegree(), w.cacheKey.globalRow(), w.cacheKey.globalCol(),
+                        w.level, w.skirts[0], w.skirts[1], w.skirts[2], w.skirts[3], exaggeration);
+                w.cached = meshes.get(w.meshKey);
+                inUse.add(w.meshKey);
+            }
+        }
+        // Pass 3 (parallel): place the vertices of the patches not cached.
+        List<PatchWork> toPlace = kept.stream().filter(w -> w.cached == null).toList();
+        IntStream.range(0, toPlace.size()).parallel().forEach(i -> toPlace.get(i).mesh = placer.mesh(toPlace.get(i),
+                toPlace.get(i).skirts));
 
         // Coarse patches (few vertices each) are merged per block into one geometry: tens of
         // thousands of tiny draw calls and buffers cost more than their triangles.
+        EyePlacement placement = new EyePlacement(eye, refraction);
+        if (material != null) {
+            placement.apply(material);
+        }
         Node root = new Node("terrain");
         Map<Long, TerrainQuad> quads = new HashMap<>();
         Map<Long, List<PatchMesh>> merged = new HashMap<>();
+        List<Geometry> transientParts = new ArrayList<>();
         long vertices = 0, triangles = 0;
+        int reused = 0;
         int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(p) + 1];
         for (PatchWork w : kept) {
             int br = r0 + (w.row0 - r0) / BLOCK_INTERVALS * BLOCK_INTERVALS, bc = c0 + (w.col0 - c0) / BLOCK_INTERVALS * BLOCK_INTERVALS;
@@ -239,29 +268,58 @@ public final class TerrainBuilder {
                 root.attachChild(q);
                 return q;
             });
+            patchesPerLevel[w.level]++;
+            if (w.cached != null) {
+                Geometry g = w.cached.geometry();
+                vertices += g.getMesh().getVertexCount();
+                triangles += g.getMesh().getTriangleCount();
+                reused++;
+                attach(quad, g, w.cached.hull(), material, placement);
+                continue;
+            }
             vertices += w.mesh.vertexCount();
             triangles += w.mesh.indices().length / 3;
-            patchesPerLevel[w.level]++;
             if (w.level >= MERGED_LEVEL) {
                 merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
             } else {
                 TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
                 patch.setMesh(PatchMesh.merge(List.of(w.mesh)));
-                patch.setMaterial(material);
-                quad.attachChild(patch);
+                attach(quad, patch, w.mesh.hull(), material, placement);
+                if (w.meshKey != null) {
+                    meshes.put(w.meshKey, new MeshCache.Entry(patch, w.mesh.hull(), w.mesh.vertexCount()));
+                } else {
+                    transientParts.add(patch);
+                }
             }
         }
         for (Map.Entry<Long, List<PatchMesh>> e : merged.entrySet()) {
             TerrainQuad quad = quads.get(e.getKey());
             TerrainPatch patch = new TerrainPatch(quad.getName() + "-coarse-" + e.getValue().size() + "-patches");
             patch.setMesh(PatchMesh.merge(e.getValue()));
-            patch.setMaterial(material);
-            quad.attachChild(patch);
+            attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement);
+            transientParts.add(patch);
         }
-        root.updateModelBound();
+        List<Geometry> evicted = meshes == null ? List.of() : meshes.trim(inUse);
         root.updateGeometricState();
-        return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled);
+        return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
+                transientParts, evicted);
     }
+
+    /**
+     * Puts a geometry under its block for this eye: its material, and its bound in the eye's frame
+     * (the vertices are ECEF; jME's culling and the views' azimuth sectors read this bound).
+     */
+    private static void attach(Node quad, Geometry g, double[] hull, Material material, EyePlacement placement) {
+        if (material != null) {
+            g.setMaterial(material);
+        }
+        g.setModelBound(placement.bound(hull));
+        g.setUserData(EYE_BOUND, true);
+        quad.attachChild(g);
+    }
+
+    /** User data on a terrain geometry: its model bound is in the eye's frame already (do not recompute it from the vertices). */
+    public static final String EYE_BOUND = "dempano.eyeBound";
 
     /**
      * Marks the patches no panorama ray reaches (see {@link HorizonCulling}); returns how many. The
@@ -381,6 +439,9 @@ public final class TerrainBuilder {
         boolean cacheable, fromCache, hidden;
         double nearestMetres;
         double[] deviations;
+        double[] skirts;
+        MeshCache.Key meshKey;
+        MeshCache.Entry cached;
         PatchMesh mesh;
 
         double errorMetres() {
@@ -388,10 +449,25 @@ public final class TerrainBuilder {
         }
     }
 
-    /** A patch's vertex arrays (positions and normals in jME axes, texture coordinates) and triangles. */
-    record PatchMesh(float[] positions, float[] normals, float[] texCoords, int[] indices) {
+    /**
+     * A patch's vertex arrays and triangles: positions as ECEF double-single ({@code high} +
+     * {@code low}, 3 floats each), ellipsoid normal and height above the ellipsoid ({@code up}, 4),
+     * surface normal (ECEF, 3), texture coordinates (elevation, flags), and 8 ECEF points whose
+     * convex hull holds the patch ({@code hull}, 24 doubles).
+     */
+    record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
+                     double[] hull) {
+        static PatchMesh of(double[] xyz, float[] up, float[] normals, float[] texCoords, int[] indices, double[] hull) {
+            float[] high = new float[xyz.length], low = new float[xyz.length];
+            for (int i = 0; i < xyz.length; i++) {
+                high[i] = (float) xyz[i];
+                low[i] = (float) (xyz[i] - high[i]);
+            }
+            return new PatchMesh(high, low, up, normals, texCoords, indices, hull);
+        }
+
         int vertexCount() {
-            return positions.length / 3;
+            return high.length / 3;
         }
 
         /** One jME mesh of several patches (indices 16-bit where they fit). */
@@ -401,14 +477,17 @@ public final class TerrainBuilder {
                 nv += m.vertexCount();
                 ni += m.indices.length;
             }
-            FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), nor = BufferUtils.createFloatBuffer(nv * 3);
+            FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), low = BufferUtils.createFloatBuffer(nv * 3);
+            FloatBuffer up = BufferUtils.createFloatBuffer(nv * 4), nor = BufferUtils.createFloatBuffer(nv * 3);
             FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 2);
             boolean shortIndices = nv <= 65536;
             ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
             IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
             int base = 0;
             for (PatchMesh m : parts) {
-                pos.put(m.positions);
+                pos.put(m.high);
+                low.put(m.low);
+                up.put(m.up);
                 nor.put(m.normals);
                 tex.put(m.texCoords);
                 for (int index : m.indices) {
@@ -423,6 +502,8 @@ public final class TerrainBuilder {
             Mesh mesh = new Mesh();
             mesh.setMode(Mesh.Mode.Triangles);
             mesh.setBuffer(VertexBuffer.Type.Position, 3, pos.flip());
+            mesh.setBuffer(VertexBuffer.Type.TexCoord2, 3, low.flip());
+            mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
             mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
             if (shortIndices) {
@@ -431,8 +512,16 @@ public final class TerrainBuilder {
                 mesh.setBuffer(VertexBuffer.Type.Index, 3, ii.flip());
             }
             mesh.updateCounts();
-            mesh.updateBound();
             return mesh;
+        }
+
+        /** The hull points (ECEF, 3 doubles each) of several meshes together. */
+        static double[] hull(List<PatchMesh> parts) {
+            double[] all = new double[parts.size() * 24];
+            for (int i = 0; i < parts.size(); i++) {
+                System.arraycopy(parts.get(i).hull, 0, all, 24 * i, 24);
+            }
+            return all;
         }
     }
 
@@ -451,23 +540,17 @@ public final class TerrainBuilder {
         }
     }
 
-    /** Exact eye-relative vertex positions, normals and meshes. Stateless apart from its tables: thread-safe. */
+    /** Exact vertex positions (ECEF), normals and meshes. Stateless apart from its tables: thread-safe. */
     private static final class Placer {
         private final Mosaic mosaic;
-        private final LocalFrame frame;
-        private final double[] eyeFoot;
-        private final Refraction refraction;
         private final int r0, c0;
         private final double[] sinLat, cosLat, sinLon, cosLon;
         private final double exaggeration;
 
-        Placer(Mosaic mosaic, LocalFrame frame, double[] eyeFoot, Refraction refraction, int r0, int c0,
-               double[] sinLat, double[] cosLat, double[] sinLon, double[] cosLon, double exaggeration) {
+        Placer(Mosaic mosaic, int r0, int c0, double[] sinLat, double[] cosLat, double[] sinLon, double[] cosLon,
+               double exaggeration) {
             this.exaggeration = exaggeration;
             this.mosaic = mosaic;
-            this.frame = frame;
-            this.eyeFoot = eyeFoot;
-            this.refraction = refraction;
             this.r0 = r0;
             this.c0 = c0;
             this.sinLat = sinLat;
@@ -476,21 +559,25 @@ public final class TerrainBuilder {
             this.cosLon = cosLon;
         }
 
-        /** Eye-relative position (jME axes) of mosaic sample (r, c) at an elevation, lifted by refraction and lowered by a drop. */
-        private void position(int r, int c, double elevationMetres, double dropMetres, double[] foot, double[] enu,
-                              float[] out, int at) {
+        /**
+         * Places mosaic sample (r, c) at an elevation lowered by a drop: its ECEF position (double,
+         * no refraction: the shader lifts it for each eye) into {@code xyz}, and its ellipsoid
+         * normal and height above the ellipsoid into {@code up} (4 floats).
+         */
+        private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, double[] xyz, float[] up,
+                           int k) {
             int ri = Math.max(0, Math.min(sinLat.length - 1, r - r0)), ci = Math.max(0, Math.min(sinLon.length - 1, c - c0));
             Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
-            double ground = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
-            double h = elevationMetres + refraction.liftMetres(ground) - dropMetres;
+            double h = elevationMetres - dropMetres;
+            double nx = cosLat[ri] * cosLon[ci], ny = cosLat[ri] * sinLon[ci], nz = sinLat[ri];
             // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
-            double ex = foot[0] + h * cosLat[ri] * cosLon[ci];
-            double ey = foot[1] + h * cosLat[ri] * sinLon[ci];
-            double ez = foot[2] + h * sinLat[ri];
-            frame.ecefToEnu(ex, ey, ez, enu);
-            out[at] = (float) enu[0];
-            out[at + 1] = (float) enu[2];
-            out[at + 2] = (float) -enu[1];
+            xyz[3 * k] = foot[0] + h * nx;
+            xyz[3 * k + 1] = foot[1] + h * ny;
+            xyz[3 * k + 2] = foot[2] + h * nz;
+            up[4 * k] = (float) nx;
+            up[4 * k + 1] = (float) ny;
+            up[4 * k + 2] = (float) nz;
+            up[4 * k + 3] = (float) h;
         }
 
         /**
@@ -506,40 +593,41 @@ public final class TerrainBuilder {
                 skirted += d > 0 ? 1 : 0;
             }
             int n = cs * cs + skirted * cs;
-            float[] positions = new float[n * 3], normals = new float[n * 3], elevations = new float[n * 2];
-            double[] foot = new double[3], enu = new double[3];
+            double[] xyz = new double[n * 3];
+            float[] up = new float[n * 4], normals = new float[n * 3], elevations = new float[n * 2];
+            double[] foot = new double[3];
             for (int gi = 0; gi < cs; gi++) {
                 int r = clampRow(mosaic, w.row0 + gi * step);
                 for (int gj = 0; gj < cs; gj++) {
                     int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
                     float h = drawnHeight(mosaic, r, c);
-                    position(r, c, h * exaggeration, 0, foot, enu, positions, 3 * k);
+                    place(r, c, h * exaggeration, 0, foot, xyz, up, k);
                     elevations[2 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
                     elevations[2 * k + 1] = mosaic.flags(r, c) | (seam ? 4 : 0);
                 }
             }
-            // Normals from the exact positions: central differences over the drawn grid.
+            // Normals (ECEF) from the exact positions: central differences over the drawn grid.
             for (int k = 0; k < cs * cs; k++) {
                 int gi = k / cs, gj = k % cs;
-                int up = gi > 0 ? k - cs : k, down = gi < cs - 1 ? k + cs : k;
+                int north = gi > 0 ? k - cs : k, south = gi < cs - 1 ? k + cs : k;
                 int left = gj > 0 ? k - 1 : k, right = gj < cs - 1 ? k + 1 : k;
-                float ax = positions[3 * right] - positions[3 * left], ay = positions[3 * right + 1] - positions[3 * left + 1];
-                float az = positions[3 * right + 2] - positions[3 * left + 2];
-                float bx = positions[3 * down] - positions[3 * up], by = positions[3 * down + 1] - positions[3 * up + 1];
-                float bz = positions[3 * down + 2] - positions[3 * up + 2];
+                double ax = xyz[3 * right] - xyz[3 * left], ay = xyz[3 * right + 1] - xyz[3 * left + 1];
+                double az = xyz[3 * right + 2] - xyz[3 * left + 2];
+                double bx = xyz[3 * south] - xyz[3 * north], by = xyz[3 * south + 1] - xyz[3 * north + 1];
+                double bz = xyz[3 * south + 2] - xyz[3 * north + 2];
                 // (b × a) points up for a = east, b = south.
-                float nx = by * az - bz * ay, ny = bz * ax - bx * az, nz = bx * ay - by * ax;
-                float len = (float) Math.sqrt(nx * nx + ny * ny + nz * nz);
-                if (len == 0) {
-                    nx = 0;
-                    ny = 1;
-                    nz = 0;
+                double nx = by * az - bz * ay, ny = bz * ax - bx * az, nz = bx * ay - by * ax;
+                double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+                if (len == 0) { // a degenerate cell (beyond the mosaic's edge): the ellipsoid's normal
+                    nx = up[4 * k];
+                    ny = up[4 * k + 1];
+                    nz = up[4 * k + 2];
                     len = 1;
                 }
-                normals[3 * k] = nx / len;
-                normals[3 * k + 1] = ny / len;
-                normals[3 * k + 2] = nz / len;
+                normals[3 * k] = (float) (nx / len);
+                normals[3 * k + 1] = (float) (ny / len);
+                normals[3 * k + 2] = (float) (nz / len);
             }
             int triangles = (cs - 1) * (cs - 1) * 2 + skirted * 2 * (cs - 1);
             int[] indices = new int[triangles * 3];
@@ -568,7 +656,7 @@ public final class TerrainBuilder {
                 for (int t = 0; t < cs; t++) {
                     int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                     int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
-                    position(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, enu, positions, 3 * k);
+                    place(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, xyz, up, k);
                     System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
                     elevations[2 * k] = elevations[2 * v];
                     elevations[2 * k + 1] = elevations[2 * v + 1];
@@ -581,7 +669,24 @@ public final class TerrainBuilder {
                 }
                 twin += cs;
             }
-            return new PatchMesh(positions, normals, elevations, indices);
+            // The prism over the patch's corner feet from its lowest to its highest vertex bounds it
+            // (up to the earth's curvature between corners, which the bounds' margin covers).
+            float lowest = Float.POSITIVE_INFINITY, highest = Float.NEGATIVE_INFINITY;
+            for (int k = 0; k < n; k++) {
+                lowest = Math.min(lowest, up[4 * k + 3]);
+                highest = Math.max(highest, up[4 * k + 3]);
+            }
+            double[] hull = new double[24];
+            int[] corners = {0, cs - 1, (cs - 1) * cs, cs * cs - 1};
+            for (int q = 0; q < 4; q++) {
+                int k = corners[q];
+                for (int a = 0; a < 3; a++) {
+                    double footA = xyz[3 * k + a] - up[4 * k + 3] * (double) up[4 * k + a];
+                    hull[6 * q + a] = footA + lowest * (double) up[4 * k + a];
+                    hull[6 * q + 3 + a] = footA + highest * (double) up[4 * k + a];
+                }
+            }
+            return PatchMesh.of(xyz, up, normals, elevations, indices, hull);
         }
 
         /** Vertex index of the t-th vertex along edge e (0 north, 1 east, 2 south, 3 west). */

@@ -1,17 +1,33 @@
-// Positions are already eye-relative (world = local east-up-south, eye at the origin).
-in vec3 inPosition;
-in vec3 inNormal;
+// Positions are earth-centred (ECEF, metres) in double-single form: inPosition + inTexCoord2. The
+// eye's position is subtracted in that form first, so the eye-relative position keeps float's
+// relative precision at every distance (3 cm at 300 km, micrometres at a metre) while the buffers
+// do not depend on the eye and are reused from one viewpoint to the next.
+precise out vec3 vPosition;
+in vec3 inPosition;      // ECEF, high part (float of the double)
+in vec3 inTexCoord2;     // ECEF, low part (double − high)
+in vec4 inTexCoord3;     // xyz: ellipsoid normal (ECEF); w: height above the ellipsoid as placed, metres
+in vec3 inNormal;        // surface normal (ECEF), for shading
 in vec2 inTexCoord;      // x: terrain elevation, metres; y: debug flags (1 filled void, 2 missing tile, 4 tile seam)
-uniform mat4 g_WorldViewProjectionMatrix;
-out vec3 vPosition;
+uniform mat4 g_ViewProjectionMatrix;
+uniform vec3 m_EyeHigh;
+uniform vec3 m_EyeLow;
+uniform vec3 m_EyeFoot;          // the ellipsoid point under the eye, relative to the eye (ECEF axes)
+uniform mat3 m_EcefToEye;        // rotation to the eye's frame in jME axes (x east, y up, z south)
+uniform float m_LiftPerSquareMetre; // refraction: lift = k·d²/2R
+uniform float m_MeanRadius;
 out vec3 vNormal;
 out float vElevation;
 flat out int vFlags;      // not interpolated: a triangle takes its provoking vertex's flags
 
 void main() {
-    vPosition = inPosition;
-    vNormal = inNormal;
+    precise vec3 rel = (inPosition - m_EyeHigh) + (inTexCoord2 - m_EyeLow);
+    // Ground distance between the feet (the chord's arc on the mean sphere), as Refraction computes it.
+    vec3 chord = rel - inTexCoord3.w * inTexCoord3.xyz - m_EyeFoot;
+    float ground = 2.0 * m_MeanRadius * asin(min(1.0, length(chord) / (2.0 * m_MeanRadius)));
+    precise vec3 lifted = rel + (m_LiftPerSquareMetre * ground * ground) * inTexCoord3.xyz;
+    vPosition = m_EcefToEye * lifted;
+    vNormal = m_EcefToEye * inNormal;
     vElevation = inTexCoord.x;
     vFlags = int(inTexCoord.y + 0.5);
-    gl_Position = g_WorldViewProjectionMatrix * vec4(inPosition, 1.0);
+    gl_Position = g_ViewProjectionMatrix * vec4(vPosition, 1.0);
 }

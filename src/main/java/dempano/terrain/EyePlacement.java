@@ -1,0 +1,82 @@
+package dempano.terrain;
+
+import com.jme3.bounding.BoundingBox;
+import com.jme3.material.Material;
+import com.jme3.math.Matrix3f;
+import com.jme3.math.Vector3f;
+import dempano.geo.Ellipsoid;
+import dempano.geo.Refraction;
+import dempano.geo.Viewpoint;
+
+/**
+ * Where the eye is, in the form the terrain shader takes it: the terrain's vertices are ECEF
+ * positions (double-single) that do not depend on the eye, and the shader subtracts the eye's
+ * position, lifts each vertex by refraction (k·d²/2R over the ground distance d between the feet, as
+ * {@link Refraction} defines it) and turns it into the eye's frame (jME axes: x east, y up,
+ * z south). Immutable.
+ */
+public final class EyePlacement {
+    /** Added to every bound, metres: the earth's curvature between a patch's corners (a few metres) and more. */
+    static final double BOUND_MARGIN_METRES = 20;
+    private final double[] eyeEcef = new double[3];
+    private final double[] footRelative = new double[3];
+    private final double[][] rows; // east, up, south (ECEF components)
+    private final double liftPerSquareMetre;
+
+    public EyePlacement(Viewpoint eye, Refraction refraction) {
+        Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), eye.eyeAltitudeMetres(), eyeEcef);
+        double[] foot = new double[3];
+        Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, foot);
+        for (int a = 0; a < 3; a++) {
+            footRelative[a] = foot[a] - eyeEcef[a];
+        }
+        double phi = Math.toRadians(eye.latDeg()), lam = Math.toRadians(eye.lonDeg());
+        double sp = Math.sin(phi), cp = Math.cos(phi), sl = Math.sin(lam), cl = Math.cos(lam);
+        rows = new double[][] {{-sl, cl, 0}, {cp * cl, cp * sl, sp}, {sp * cl, sp * sl, -cp}};
+        liftPerSquareMetre = refraction.liftMetres(1);
+    }
+
+    /** Sets the eye's uniforms on a terrain material. */
+    public void apply(Material m) {
+        float[] high = new float[3], low = new float[3];
+        for (int a = 0; a < 3; a++) {
+            high[a] = (float) eyeEcef[a];
+            low[a] = (float) (eyeEcef[a] - high[a]);
+        }
+        m.setVector3("EyeHigh", new Vector3f(high[0], high[1], high[2]));
+        m.setVector3("EyeLow", new Vector3f(low[0], low[1], low[2]));
+        m.setVector3("EyeFoot", new Vector3f((float) footRelative[0], (float) footRelative[1], (float) footRelative[2]));
+        m.setParam("EcefToEye", com.jme3.shader.VarType.Matrix3, new Matrix3f(
+                (float) rows[0][0], (float) rows[0][1], (float) rows[0][2],
+                (float) rows[1][0], (float) rows[1][1], (float) rows[1][2],
+                (float) rows[2][0], (float) rows[2][1], (float) rows[2][2]));
+        m.setFloat("LiftPerSquareMetre", (float) liftPerSquareMetre);
+        m.setFloat("MeanRadius", (float) Ellipsoid.MEAN_RADIUS_METRES);
+    }
+
+    /**
+     * A box in the eye's frame (jME axes, metres) holding every point of an ECEF point set's convex
+     * hull as the shader places it: refraction's lift (at most that of the farthest point, along the
+     * vertical there) and {@link #BOUND_MARGIN_METRES} are added on every side.
+     *
+     * @param hull ECEF points, 3 doubles each
+     */
+    public BoundingBox bound(double[] hull) {
+        double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        double farthest = 0;
+        for (int i = 0; i < hull.length; i += 3) {
+            double dx = hull[i] - eyeEcef[0], dy = hull[i + 1] - eyeEcef[1], dz = hull[i + 2] - eyeEcef[2];
+            farthest = Math.max(farthest, Math.sqrt(dx * dx + dy * dy + dz * dz));
+            for (int a = 0; a < 3; a++) {
+                double v = rows[a][0] * dx + rows[a][1] * dy + rows[a][2] * dz;
+                min[a] = Math.min(min[a], v);
+                max[a] = Math.max(max[a], v);
+            }
+        }
+        double pad = BOUND_MARGIN_METRES + liftPerSquareMetre * Math.pow(1.01 * farthest + 1000, 2);
+        Vector3f lo = new Vector3f((float) (min[0] - pad), (float) (min[1] - pad), (float) (min[2] - pad));
+        Vector3f hi = new Vector3f((float) (max[0] + pad), (float) (max[1] + pad), (float) (max[2] + pad));
+        return new BoundingBox(lo, hi);
+    }
+}
