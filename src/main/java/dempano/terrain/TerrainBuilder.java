@@ -26,10 +26,14 @@ import java.util.stream.IntStream;
 /**
  * Builds the terrain the GPU draws: the mosaic cut into blocks of {@link #BLOCK_INTERVALS}² cells
  * (each a jME {@link TerrainQuad}) of patches of {@link #PATCH_INTERVALS}² cells (each a
- * {@link TerrainPatch}). Every vertex sits where the WGS84 ellipsoid puts it relative to the eye
- * (east-north-up in double precision, stored as float relative to the eye, so float rounding is
- * relative: 3 cm at 300 km); jME axes: x = east, y = up, z = south. Refraction lifts each vertex by
- * k·d²/2R. Patches wholly beyond the range are left out.
+ * {@link TerrainPatch}). Every vertex sits where the WGS84 ellipsoid puts it, stored as an ECEF
+ * position in double-single form (two floats, 1e-15 relative), with its ellipsoid normal and
+ * height: nothing depends on the eye, so a {@link MeshCache} keeps patch geometries (and their GL
+ * buffers) from one viewpoint to the next. The vertex shader subtracts the eye's position in the same
+ * form (float rounding stays relative to the distance from the eye: 3 cm at 300 km), lifts each
+ * vertex by refraction, k·d²/2R, and turns it into the eye's frame, jME axes x = east, y = up,
+ * z = south ({@link EyePlacement}). Each geometry's bound is set in the eye's frame for each build.
+ * Patches wholly beyond the range are left out.
  *
  * <p>Level of detail: each patch is drawn with every 2^level-th sample, the level chosen by
  * {@link LevelOfDetail} from the patch's own deviations and its distance, before any vertex is placed,
@@ -457,14 +461,6 @@ public final class TerrainBuilder {
      */
     record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
                      double[] hull) {
-        static PatchMesh of(double[] xyz, float[] up, float[] normals, float[] texCoords, int[] indices, double[] hull) {
-            float[] high = new float[xyz.length], low = new float[xyz.length];
-            for (int i = 0; i < xyz.length; i++) {
-                high[i] = (float) xyz[i];
-                low[i] = (float) (xyz[i] - high[i]);
-            }
-            return new PatchMesh(high, low, up, normals, texCoords, indices, hull);
-        }
 
         int vertexCount() {
             return high.length / 3;
@@ -561,19 +557,20 @@ public final class TerrainBuilder {
 
         /**
          * Places mosaic sample (r, c) at an elevation lowered by a drop: its ECEF position (double,
-         * no refraction: the shader lifts it for each eye) into {@code xyz}, and its ellipsoid
+         * no refraction: the shader lifts it for each eye) as double-single into {@code high} and
+         * {@code low}, and its ellipsoid
          * normal and height above the ellipsoid into {@code up} (4 floats).
          */
-        private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, double[] xyz, float[] up,
-                           int k) {
+        private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, float[] high, float[] low,
+                           float[] up, int k) {
             int ri = Math.max(0, Math.min(sinLat.length - 1, r - r0)), ci = Math.max(0, Math.min(sinLon.length - 1, c - c0));
             Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
             double h = elevationMetres - dropMetres;
             double nx = cosLat[ri] * cosLon[ci], ny = cosLat[ri] * sinLon[ci], nz = sinLat[ri];
             // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
-            xyz[3 * k] = foot[0] + h * nx;
-            xyz[3 * k + 1] = foot[1] + h * ny;
-            xyz[3 * k + 2] = foot[2] + h * nz;
+            split(foot[0] + h * nx, high, low, 3 * k);
+            split(foot[1] + h * ny, high, low, 3 * k + 1);
+            split(foot[2] + h * nz, high, low, 3 * k + 2);
             up[4 * k] = (float) nx;
             up[4 * k + 1] = (float) ny;
             up[4 * k + 2] = (float) nz;
@@ -593,7 +590,7 @@ public final class TerrainBuilder {
                 skirted += d > 0 ? 1 : 0;
             }
             int n = cs * cs + skirted * cs;
-            double[] xyz = new double[n * 3];
+            float[] high = new float[n * 3], low = new float[n * 3];
             float[] up = new float[n * 4], normals = new float[n * 3], elevations = new float[n * 2];
             double[] foot = new double[3];
             for (int gi = 0; gi < cs; gi++) {
@@ -601,7 +598,7 @@ public final class TerrainBuilder {
                 for (int gj = 0; gj < cs; gj++) {
                     int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
                     float h = drawnHeight(mosaic, r, c);
-                    place(r, c, h * exaggeration, 0, foot, xyz, up, k);
+                    place(r, c, h * exaggeration, 0, foot, high, low, up, k);
                     elevations[2 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
                     elevations[2 * k + 1] = mosaic.flags(r, c) | (seam ? 4 : 0);
@@ -612,10 +609,10 @@ public final class TerrainBuilder {
                 int gi = k / cs, gj = k % cs;
                 int north = gi > 0 ? k - cs : k, south = gi < cs - 1 ? k + cs : k;
                 int left = gj > 0 ? k - 1 : k, right = gj < cs - 1 ? k + 1 : k;
-                double ax = xyz[3 * right] - xyz[3 * left], ay = xyz[3 * right + 1] - xyz[3 * left + 1];
-                double az = xyz[3 * right + 2] - xyz[3 * left + 2];
-                double bx = xyz[3 * south] - xyz[3 * north], by = xyz[3 * south + 1] - xyz[3 * north + 1];
-                double bz = xyz[3 * south + 2] - xyz[3 * north + 2];
+                double ax = at(high, low, 3 * right) - at(high, low, 3 * left), ay = at(high, low, 3 * right + 1) - at(high, low, 3 * left + 1);
+                double az = at(high, low, 3 * right + 2) - at(high, low, 3 * left + 2);
+                double bx = at(high, low, 3 * south) - at(high, low, 3 * north), by = at(high, low, 3 * south + 1) - at(high, low, 3 * north + 1);
+                double bz = at(high, low, 3 * south + 2) - at(high, low, 3 * north + 2);
                 // (b × a) points up for a = east, b = south.
                 double nx = by * az - bz * ay, ny = bz * ax - bx * az, nz = bx * ay - by * ax;
                 double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
@@ -656,7 +653,7 @@ public final class TerrainBuilder {
                 for (int t = 0; t < cs; t++) {
                     int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                     int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
-                    place(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, xyz, up, k);
+                    place(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, high, low, up, k);
                     System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
                     elevations[2 * k] = elevations[2 * v];
                     elevations[2 * k + 1] = elevations[2 * v + 1];
@@ -681,12 +678,23 @@ public final class TerrainBuilder {
             for (int q = 0; q < 4; q++) {
                 int k = corners[q];
                 for (int a = 0; a < 3; a++) {
-                    double footA = xyz[3 * k + a] - up[4 * k + 3] * (double) up[4 * k + a];
+                    double footA = at(high, low, 3 * k + a) - up[4 * k + 3] * (double) up[4 * k + a];
                     hull[6 * q + a] = footA + lowest * (double) up[4 * k + a];
                     hull[6 * q + 3 + a] = footA + highest * (double) up[4 * k + a];
                 }
             }
-            return PatchMesh.of(xyz, up, normals, elevations, indices, hull);
+            return new PatchMesh(high, low, up, normals, elevations, indices, hull);
+        }
+
+        /** A double as float high part and float remainder. */
+        private static void split(double v, float[] high, float[] low, int i) {
+            high[i] = (float) v;
+            low[i] = (float) (v - high[i]);
+        }
+
+        /** The double a double-single pair holds (to 1e-15 relative). */
+        private static double at(float[] high, float[] low, int i) {
+            return high[i] + (double) low[i];
         }
 
         /** Vertex index of the t-th vertex along edge e (0 north, 1 east, 2 south, 3 west). */

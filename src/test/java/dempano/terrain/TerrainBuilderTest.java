@@ -73,4 +73,72 @@ class TerrainBuilderTest {
         assertEquals(20, small.size());
         assertEquals(build(dem, 46.5, 8.5, 30_000, null).triangles(), t.triangles());
     }
+
+    static TerrainBuilder.Terrain build(DemSource dem, double lat, double lon, double rangeMetres, DeviationCache cache,
+                                        MeshCache meshes) {
+        Mosaic m = Mosaic.around(dem, lat, lon, rangeMetres, MissingTilePolicy.SEA_LEVEL);
+        Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, 2);
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null, 20, 0.5, 1, cache, meshes, Double.NaN);
+    }
+
+    @Test
+    void fineGeometriesAreReusedByTheSameAndANearbyViewpointAndMatchAFreshBuild() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        DeviationCache deviations = new DeviationCache();
+        MeshCache meshes = new MeshCache();
+        TerrainBuilder.Terrain first = build(dem, 46.5, 8.5, 40_000, deviations, meshes);
+        assertEquals(0, first.reusedPatches());
+        int fine = first.patchesPerLevel()[0] + first.patchesPerLevel()[1];
+        assertEquals(fine, meshes.size(), "every fine patch (all cacheable here) is kept");
+        assertEquals(first.patches() - fine > 0 ? 1 : 0, Math.min(1, first.transientParts().size()),
+                "merged coarse blocks are made for the build only");
+        TerrainBuilder.Terrain again = build(dem, 46.5, 8.5, 40_000, deviations, meshes);
+        assertEquals(fine, again.reusedPatches(), "the same viewpoint reuses every fine patch");
+        assertEquals(first.triangles(), again.triangles());
+        assertEquals(first.vertices(), again.vertices());
+        // 2 km away most fine patches keep their level and skirts; the terrain is that of a fresh build.
+        TerrainBuilder.Terrain moved = build(dem, 46.518, 8.5, 40_000, deviations, meshes);
+        TerrainBuilder.Terrain fresh = build(dem, 46.518, 8.5, 40_000, null, null);
+        int movedFine = moved.patchesPerLevel()[0] + moved.patchesPerLevel()[1];
+        assertTrue(moved.reusedPatches() > 0.5 * movedFine, moved.reusedPatches() + " of " + movedFine + " reused");
+        assertArrayEquals(fresh.patchesPerLevel(), moved.patchesPerLevel());
+        assertEquals(fresh.triangles(), moved.triangles());
+        assertEquals(fresh.vertices(), moved.vertices());
+        int freshFine = fresh.patchesPerLevel()[0] + fresh.patchesPerLevel()[1];
+        assertEquals(freshFine + countMerged(fresh), fresh.transientParts().size(),
+                "without a cache every geometry is made for the build (and released after it)");
+    }
+
+    private static int countMerged(TerrainBuilder.Terrain t) {
+        int merged = 0;
+        for (com.jme3.scene.Geometry g : t.transientParts()) {
+            merged += g.getName().contains("-coarse-") ? 1 : 0;
+        }
+        return merged;
+    }
+
+    @Test
+    void aBoundedMeshCacheLetsTheLeastRecentlyUsedGoButNeverWhatTheBuildDraws() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(44, 6, 5, 5));
+        MeshCache small = new MeshCache(50_000);
+        TerrainBuilder.Terrain a = build(dem, 46.5, 8.5, 30_000, null, small);
+        long inUseA = small.vertices();
+        assertTrue(inUseA > 50_000, "this build alone needs more than the budget: " + inUseA);
+        assertTrue(a.evicted().isEmpty(), "nothing the build draws is let go");
+        // 150 km away: nothing in common; all of the first build's geometries go.
+        TerrainBuilder.Terrain b = build(dem, 45.2, 7.2, 30_000, null, small);
+        assertEquals(0, b.reusedPatches());
+        assertTrue(b.evicted().size() > 0);
+        int fineB = b.patchesPerLevel()[0] + b.patchesPerLevel()[1];
+        assertEquals(fineB, small.size(), "only the second build's geometries stay");
+        java.util.Set<com.jme3.scene.Geometry> drawn = new java.util.HashSet<>();
+        b.root().depthFirstTraversal(sp -> {
+            if (sp instanceof com.jme3.scene.Geometry g) {
+                drawn.add(g);
+            }
+        });
+        for (com.jme3.scene.Geometry g : b.evicted()) {
+            assertTrue(!drawn.contains(g), "an evicted geometry is not in the scene being drawn");
+        }
+    }
 }
