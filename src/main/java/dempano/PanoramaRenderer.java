@@ -111,49 +111,45 @@ public final class PanoramaRenderer implements AutoCloseable {
         // Terrain wholly below the lowest view row the stitcher samples (the bottom row's 4×4
         // neighbourhood reaches two view pixels lower) is left out with what nearer terrain hides.
         double cullBelowDeg = er.bottomDeg() - 3 / req.pixelsPerDegree();
-        // The mesh cache's geometries can be in one scene at a time: a concurrent render builds its own.
-        boolean withMeshCache = meshLock.tryLock();
-        try {
-            TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
-                    req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null, cullBelowDeg);
-            t = lap(timings, "mesh", t);
-            return renderTerrain(req, mosaic, eye, er, terrain, timings, t, progress);
-        } finally {
-            if (withMeshCache) {
-                meshLock.unlock();
-            }
-        }
-    }
-
-    private Panorama renderTerrain(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ElevationRange er,
-                                   TerrainBuilder.Terrain terrain, Map<String, Double> timings, long t,
-                                   Consumer<String> progress) {
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
-        progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
-                + " (" + terrain.triangles() / 1_000_000.0 + " M triangles, " + terrain.reusedPatches()
-                + " patches reused)");
         ViewCapture[] captures;
-        long[] drawAndRead = new long[2];
+        long triangles;
+        // The mesh cache's geometries can be in one scene at a time, so it is held from building to
+        // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
+        boolean withMeshCache = meshLock.tryLock();
         try {
-            // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
-            captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, false, req.colour(),
-                    req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), drawAndRead);
+            TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
+                    req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null, cullBelowDeg);
+            t = lap(timings, "mesh", t);
+            triangles = terrain.triangles();
+            progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
+                    + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
+            long[] drawAndRead = new long[2];
+            try {
+                // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
+                captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, false, req.colour(),
+                        req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), drawAndRead);
+            } finally {
+                terrain.root().detachAllChildren();
+                List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
+                released.addAll(terrain.evicted());
+                gl.release(released);
+            }
+            long afterRender = System.nanoTime();
+            // "render" splits into drawing and reading back; what remains (scene upload, culling, release) is "upload".
+            timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1]) / 1e6);
+            timings.put("draw", drawAndRead[0] / 1e6);
+            timings.put("readback", drawAndRead[1] / 1e6);
+            t = afterRender;
         } finally {
-            terrain.root().detachAllChildren();
-            List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
-            released.addAll(terrain.evicted());
-            gl.release(released);
+            if (withMeshCache) {
+                meshLock.unlock();
+            }
         }
-        long afterRender = System.nanoTime();
-        // "render" splits into drawing and reading back; what remains (scene upload, culling) is "upload".
-        timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1]) / 1e6);
-        timings.put("draw", drawAndRead[0] / 1e6);
-        timings.put("readback", drawAndRead[1] / 1e6);
-        t = afterRender;
 
         progress.accept("stitching");
         int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
@@ -170,7 +166,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         t = lap(timings, "stitch", t);
         return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
                 layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,
-                req.lodErrorPx(), terrain.triangles());
+                req.lodErrorPx(), triangles);
     }
 
     private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, Map<String, Double> timings,
