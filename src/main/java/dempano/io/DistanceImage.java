@@ -14,6 +14,9 @@ import java.util.Locale;
  */
 public final class DistanceImage {
     private static final int LEGEND_PX = 48;
+    /** Piecewise ramp red → yellow → green → cyan → blue → violet (RGB in [0, 1]). */
+    private static final double[][] STOPS = {{0.70, 0.05, 0.05}, {0.95, 0.55, 0.05}, {0.85, 0.85, 0.15},
+            {0.25, 0.70, 0.30}, {0.15, 0.65, 0.75}, {0.15, 0.30, 0.80}, {0.35, 0.15, 0.55}};
 
     private DistanceImage() {
     }
@@ -24,9 +27,7 @@ public final class DistanceImage {
             return 0xffffff;
         }
         double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - Math.log(minM)) / (Math.log(maxM) - Math.log(minM));
-        // Piecewise ramp red → yellow → green → cyan → blue → violet.
-        double[][] stops = {{0.70, 0.05, 0.05}, {0.95, 0.55, 0.05}, {0.85, 0.85, 0.15}, {0.25, 0.70, 0.30},
-                {0.15, 0.65, 0.75}, {0.15, 0.30, 0.80}, {0.35, 0.15, 0.55}};
+        double[][] stops = STOPS; // shared: a table per pixel was gigabytes of garbage per picture
         double x = t * (stops.length - 1);
         int i = Math.min(stops.length - 2, (int) Math.floor(x));
         double f = x - i;
@@ -40,10 +41,12 @@ public final class DistanceImage {
         double minM = 100, maxM = Math.max(1000, maxMetres);
         BufferedImage img = new BufferedImage(width, height + LEGEND_PX, BufferedImage.TYPE_INT_RGB);
         int base = distance.position();
+        int[] row = new int[width];
         for (int r = 0; r < height; r++) {
             for (int c = 0; c < width; c++) {
-                img.setRGB(c, r, colour(distance.get(base + r * width + c), minM, maxM));
+                row[c] = colour(distance.get(base + r * width + c), minM, maxM);
             }
+            img.setRGB(0, r, width, 1, row, 0, width);
         }
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
