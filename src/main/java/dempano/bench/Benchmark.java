@@ -20,6 +20,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.markers.SeriesMarkers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -115,8 +119,9 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
                     : String.format(Locale.ROOT, " cold %.2f s, warm %.2f s, peak %.2f GB", r.coldMillis() / 1e3,
                             r.warmMillis() / 1e3, r.peakRssBytes() / 1e9)));
         }
-        String md = report(cases, results);
         Files.createDirectories(outDir);
+        boolean plotted = plot(cases, results, outDir.resolve("performance.png"));
+        String md = report(cases, results) + (plotted ? "\n![time against range, ppd and level of detail](performance.png)\n" : "");
         Files.writeString(outDir.resolve("performance.md"), md);
         System.out.println(md);
         return 0;
@@ -293,6 +298,82 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
             }
         }
         return md.toString();
+    }
+
+    /**
+     * The curves as pictures: time against range and against ppd (cold and warm), and the level of
+     * detail's error against warm time. Writes nothing (returns false) when a subset of cases leaves
+     * no curve of two points or more.
+     */
+    static boolean plot(List<Case> cases, List<Result> results, Path png) throws IOException {
+        Map<String, Case> byName = new LinkedHashMap<>();
+        Map<String, Result> ok = new LinkedHashMap<>();
+        for (int i = 0; i < cases.size(); i++) {
+            if (results.get(i).error() == null) {
+                byName.put(cases.get(i).name(), cases.get(i));
+                ok.put(cases.get(i).name(), results.get(i));
+            }
+        }
+        List<XYChart> charts = new ArrayList<>();
+        // The default scene (srtm3-150km: 150 km, 20 ppd) is a point on both curves.
+        List<String> range = ok.keySet().stream().filter(n -> n.startsWith("range-") || n.equals("srtm3-150km"))
+                .sorted(java.util.Comparator.comparingDouble(n -> byName.get(n).rangeKm())).toList();
+        List<String> ppd = ok.keySet().stream().filter(n -> n.startsWith("ppd-") || n.equals("srtm3-150km"))
+                .sorted(java.util.Comparator.comparingDouble(n -> byName.get(n).ppd())).toList();
+        if (range.size() >= 2) {
+            charts.add(timeChart("time against range (3×3 SRTM3, 20 ppd)", "range, km", range, byName, ok, Case::rangeKm));
+        }
+        if (ppd.size() >= 2) {
+            charts.add(timeChart("time against resolution (150 km)", "pixels per degree", ppd, byName, ok, Case::ppd));
+        }
+        List<String> lod = ok.keySet().stream().filter(n -> byName.get(n).scene().startsWith("3×3") && byName.get(n)
+                .renderer().equals("opengl") && !Double.isNaN(ok.get(n).p99Rel())).sorted(java.util.Comparator
+                .comparingDouble(n -> byName.get(n).lodPx())).toList();
+        if (lod.size() >= 2) {
+            XYChart chart = chart("level of detail: error against warm time (3×3, 150 km)", "warm render time, s",
+                    "p99 relative distance error, %");
+            chart.getStyler().setYAxisDecimalPattern("0.000");
+            double[] xs = lod.stream().mapToDouble(n -> ok.get(n).warmMillis() / 1e3).toArray();
+            double[] ys = lod.stream().mapToDouble(n -> ok.get(n).p99Rel() * 100).toArray();
+            chart.addSeries("GPU path, each point's LOD bound in px", xs, ys).setMarker(SeriesMarkers.CIRCLE);
+            // Room around the points (XChart fits the axes to the data's extremes).
+            double x0 = java.util.Arrays.stream(xs).min().orElseThrow(), x1 = java.util.Arrays.stream(xs).max().orElseThrow();
+            double y0 = java.util.Arrays.stream(ys).min().orElseThrow(), y1 = java.util.Arrays.stream(ys).max().orElseThrow();
+            chart.getStyler().setXAxisMin(x0 - 0.15 * (x1 - x0) - 0.02).setXAxisMax(x1 + 0.15 * (x1 - x0) + 0.02);
+            chart.getStyler().setYAxisMin(Math.max(0, y0 - 0.2 * (y1 - y0) - 0.01)).setYAxisMax(y1 + 0.2 * (y1 - y0) + 0.01);
+            chart.getStyler().setXAxisDecimalPattern("0.00");
+            for (int i = 0; i < xs.length; i++) {
+                chart.addAnnotation(new org.knowm.xchart.AnnotationText(String.format(Locale.ROOT, "%.2g px",
+                        byName.get(lod.get(i)).lodPx()), xs[i], ys[i] + 0.06 * (y1 - y0) + 0.003, false));
+            }
+            charts.add(chart);
+        }
+        if (charts.isEmpty()) {
+            return false;
+        }
+        BitmapEncoder.saveBitmap(charts, 1, charts.size(), png.toString().replaceFirst("\\.png$", ""),
+                BitmapEncoder.BitmapFormat.PNG);
+        return true;
+    }
+
+    private static XYChart chart(String title, String x, String y) {
+        XYChart chart = new XYChartBuilder().width(520).height(380).title(title).xAxisTitle(x).yAxisTitle(y).build();
+        chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        return chart;
+    }
+
+    private static XYChart timeChart(String title, String x, List<String> names, Map<String, Case> cases,
+                                     Map<String, Result> results, java.util.function.ToDoubleFunction<Case> axis) {
+        XYChart chart = chart(title, x, "time, s");
+        double[] xs = names.stream().mapToDouble(n -> axis.applyAsDouble(cases.get(n))).toArray();
+        chart.addSeries("cold (fresh JVM)", xs, names.stream().mapToDouble(n -> results.get(n).coldMillis() / 1e3).toArray())
+                .setMarker(SeriesMarkers.CIRCLE);
+        chart.addSeries("warm", xs, names.stream().mapToDouble(n -> results.get(n).warmMillis() / 1e3).toArray())
+                .setMarker(SeriesMarkers.CIRCLE);
+        chart.addSeries("warm draw", xs, names.stream().mapToDouble(n -> results.get(n).warmStages()
+                .getOrDefault("draw", Double.NaN) / 1e3).toArray()).setMarker(SeriesMarkers.DIAMOND);
+        return chart;
     }
 
     private static String git(String... args) {
