@@ -23,11 +23,17 @@ public final class DistanceImage {
 
     /** Colour for a distance in [minM, maxM] on a log scale (a turbo-like ramp). */
     static int colour(double metres, double minM, double maxM) {
+        double logMin = Math.log(minM);
+        return colour(metres, minM, maxM, logMin, 1 / (Math.log(maxM) - logMin));
+    }
+
+    /** As above, with log(minM) and 1 / (log(maxM) − log(minM)) given (they are the same for a whole picture). */
+    private static int colour(double metres, double minM, double maxM, double logMin, double perLog) {
         if (!Double.isFinite(metres)) {
             return 0xffffff;
         }
-        double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - Math.log(minM)) / (Math.log(maxM) - Math.log(minM));
-        double[][] stops = STOPS; // shared: a table per pixel was gigabytes of garbage per picture
+        double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - logMin) * perLog;
+        double[][] stops = STOPS;
         double x = t * (stops.length - 1);
         int i = Math.min(stops.length - 2, (int) Math.floor(x));
         double f = x - i;
@@ -37,17 +43,22 @@ public final class DistanceImage {
         return (r << 16) | (g << 8) | b;
     }
 
+    /**
+     * The picture of {@code height} rows of {@code width} distances (metres, row-major from the
+     * buffer's position; +∞ or NaN = sky, white), coloured from 100 m to {@code maxMetres} (at least
+     * 1 km), with the legend strip below.
+     */
     public static BufferedImage render(java.nio.FloatBuffer distance, int width, int height, double maxMetres) {
         double minM = 100, maxM = Math.max(1000, maxMetres);
+        double logMin = Math.log(minM), perLog = 1 / (Math.log(maxM) - logMin);
         BufferedImage img = new BufferedImage(width, height + LEGEND_PX, BufferedImage.TYPE_INT_RGB);
+        int[] pixels = ((java.awt.image.DataBufferInt) img.getRaster().getDataBuffer()).getData();
         int base = distance.position();
-        int[] row = new int[width];
-        for (int r = 0; r < height; r++) {
-            for (int c = 0; c < width; c++) {
-                row[c] = colour(distance.get(base + r * width + c), minM, maxM);
+        java.util.stream.IntStream.range(0, height).parallel().forEach(r -> {
+            for (int c = 0, i = r * width; c < width; c++, i++) {
+                pixels[i] = colour(distance.get(base + i), minM, maxM, logMin, perLog);
             }
-            img.setRGB(0, r, width, 1, row, 0, width);
-        }
+        });
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setColor(Color.WHITE);

@@ -13,6 +13,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 import javax.imageio.ImageIO;
 
 /**
@@ -23,30 +25,65 @@ public final class PanoramaWriter {
     private PanoramaWriter() {
     }
 
-    /** @return the files written */
+    /**
+     * Writes the files; the distance picture is drawn and encoded on a second thread meanwhile (PNG
+     * encoding is single-threaded and takes about as long as the colour picture's).
+     *
+     * @return the files written
+     */
     public static List<Path> write(Panorama p, String prefix, boolean pfm) throws IOException {
         List<Path> files = new ArrayList<>();
-        if (p.hasColour()) {
-            Path png = Path.of(prefix + ".png");
-            AtomicFiles.write(png, out -> {
-                if (!ImageIO.write(p.image(), "png", out)) {
-                    throw new IOException("no PNG writer");
-                }
-            });
-            files.add(png);
-        }
+        FutureTask<Path> distancePicture = null;
         if (p.hasDistance()) {
-            Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
-            if (pfm) {
-                FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
-            } else {
-                FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
-            }
-            files.add(dist);
             Path distPng = Path.of(prefix + "-distance.png");
-            AtomicFiles.write(distPng, out -> ImageIO.write(
-                    DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
-            files.add(distPng);
+            distancePicture = new FutureTask<>(() -> {
+                AtomicFiles.write(distPng, out -> ImageIO.write(
+                        DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
+                return distPng;
+            });
+            Thread t = new Thread(distancePicture, "dempano-distance-png");
+            t.setDaemon(true);
+            t.start();
+        }
+        Throwable failure = null;
+        try {
+            if (p.hasColour()) {
+                Path png = Path.of(prefix + ".png");
+                AtomicFiles.write(png, out -> {
+                    if (!ImageIO.write(p.image(), "png", out)) {
+                        throw new IOException("no PNG writer");
+                    }
+                });
+                files.add(png);
+            }
+            if (p.hasDistance()) {
+                Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
+                if (pfm) {
+                    FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+                } else {
+                    FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
+                }
+                files.add(dist);
+            }
+        } catch (IOException | RuntimeException e) {
+            failure = e;
+        }
+        if (distancePicture != null) {
+            // Never return (or throw) with the second thread still writing.
+            try {
+                files.add(await(distancePicture));
+            } catch (IOException | RuntimeException e) {
+                if (failure == null) {
+                    failure = e;
+                } else {
+                    failure.addSuppressed(e);
+                }
+            }
+        }
+        if (failure instanceof IOException io) {
+            throw io;
+        } else if (failure instanceof RuntimeException re) {
+            throw re;
         }
         for (Layer l : p.layers()) {
             Path f = Path.of(prefix + "-" + l.fileName() + ".npy");
@@ -58,6 +95,31 @@ public final class PanoramaWriter {
         AtomicFiles.write(json, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
         files.add(json);
         return files;
+    }
+
+    private static Path await(FutureTask<Path> task) throws IOException {
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    return task.get();
+                } catch (InterruptedException e) {
+                    interrupted = true; // the file is being written: finish waiting, then restore the flag
+                }
+            }
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof IOException io) {
+                throw io;
+            }
+            if (e.getCause() instanceof RuntimeException re) {
+                throw re;
+            }
+            throw new IOException("writing the distance picture failed", e.getCause());
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /** The metadata document (see README for the fields). */

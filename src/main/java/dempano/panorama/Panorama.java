@@ -136,8 +136,11 @@ public final class Panorama {
 
     /** The colour image; throws if colour was not rendered. */
     public BufferedImage image() {
+        int[] colour = colour();
         BufferedImage img = new BufferedImage(widthPx(), heightPx(), BufferedImage.TYPE_INT_RGB);
-        img.setRGB(0, 0, widthPx(), heightPx(), colour(), 0, widthPx());
+        // Straight into the raster (setRGB converts pixel by pixel); INT_RGB ignores the alpha byte.
+        int[] pixels = ((java.awt.image.DataBufferInt) img.getRaster().getDataBuffer()).getData();
+        System.arraycopy(colour, 0, pixels, 0, colour.length);
         return img;
     }
 

@@ -128,6 +128,48 @@ class OutputChoiceRenderTest {
     }
 
     @Test
+    void bothOutputsAreWrittenAndReadBackAsRendered(@TempDir Path dir) throws Exception {
+        Panorama p = gl.render(request(30));
+        List<Path> files = PanoramaWriter.write(p, dir.resolve("p").toString(), false);
+        List<String> names = new ArrayList<>();
+        files.forEach(f -> names.add(f.getFileName().toString()));
+        assertEquals(List.of("p.png", "p-distance.npy", "p-distance.png", "p.json"), names);
+        java.awt.image.BufferedImage colour = javax.imageio.ImageIO.read(dir.resolve("p.png").toFile());
+        java.awt.image.BufferedImage distance = javax.imageio.ImageIO.read(dir.resolve("p-distance.png").toFile());
+        java.nio.ByteBuffer npy = java.nio.ByteBuffer.wrap(Files.readAllBytes(dir.resolve("p-distance.npy")))
+                .order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        int header = 10 + (npy.get(8) & 0xff) + ((npy.get(9) & 0xff) << 8);
+        float[] d = p.distanceArray();
+        float far = Float.NEGATIVE_INFINITY;
+        for (float v : d) {
+            far = Float.isFinite(v) ? Math.max(far, v) : far;
+        }
+        int w = p.widthPx();
+        for (int row = 0; row < p.heightPx(); row++) {
+            for (int col = 0; col < w; col++) {
+                assertEquals(p.argb(col, row) & 0xffffff, colour.getRGB(col, row) & 0xffffff, "colour " + col + "," + row);
+                assertEquals(d[row * w + col], npy.getFloat(header + 4 * (row * w + col)), "distance " + col + "," + row);
+                // The distance picture: sky white, terrain never white.
+                int rgb = distance.getRGB(col, row) & 0xffffff;
+                assertEquals(Float.isFinite(d[row * w + col]), rgb != 0xffffff, "distance picture " + col + "," + row);
+            }
+        }
+        assertTrue(distance.getHeight() > p.heightPx(), "legend strip");
+    }
+
+    @Test
+    void anUnwritableOutputNamesTheFileAndLeavesNoWriterRunning(@TempDir Path dir) {
+        Panorama p = gl.render(request(30));
+        Path missing = dir.resolve("no-such-folder");
+        java.io.IOException e = assertThrows(java.io.IOException.class,
+                () -> PanoramaWriter.write(p, missing.resolve("p").toString(), false));
+        assertTrue(e.getMessage().contains(missing.toString()), e.getMessage());
+        assertFalse(Thread.getAllStackTraces().keySet().stream().anyMatch(t -> t.getName().equals("dempano-distance-png")),
+                "the distance picture's thread finished before write returned");
+        assertFalse(Files.exists(missing));
+    }
+
+    @Test
     void requestsThatWouldRenderNothingOrNeedMissingDistancesAreRefused() {
         PanoramaRequest req = request(30);
         IllegalArgumentException nothing = assertThrows(IllegalArgumentException.class,
