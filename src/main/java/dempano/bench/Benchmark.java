@@ -104,8 +104,10 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         }
         if (only == null || only.stream().anyMatch(n -> n.startsWith("srtm1"))) {
             Path srtm1 = FractalRelief.ensure(demCache.resolve("srtm1"), 44, 6, 5, 5, HgtTile.SRTM1_SAMPLES);
-            cases.add(new Case("srtm1-300km", "5×5 SRTM1 (generated), 300 km (sea beyond the 5×5)", srtm1.toString(), 46.5, 8.5,
-                    300, 20, 0.5, true, true, "opengl", "6g", false));
+            String scene1 = "5×5 SRTM1 (generated), 300 km (sea beyond the 5×5)";
+            cases.add(new Case("srtm1-300km", scene1, srtm1.toString(), 46.5, 8.5, 300, 20, 0.5, true, true, "opengl", "6g", true));
+            cases.add(new Case("srtm1-300km-reference", scene1, srtm1.toString(), 46.5, 8.5, 300, 20, 0, true, true, "reference",
+                    "6g", false));
         }
         if (only != null) {
             cases.removeIf(c -> !only.contains(c.name()));
