@@ -9,6 +9,7 @@ import dempano.dem.HgtTile;
 import dempano.io.PanoramaWriter;
 import dempano.panorama.DistanceComparison;
 import dempano.panorama.Panorama;
+import java.awt.Color;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -16,13 +17,18 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.ToDoubleFunction;
+import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -226,7 +232,7 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
 
     private static int argMedian(double[] v) {
         Integer[] idx = {0, 1, 2};
-        java.util.Arrays.sort(idx, (i, j) -> Double.compare(v[i], v[j]));
+        Arrays.sort(idx, (i, j) -> Double.compare(v[i], v[j]));
         return idx[1];
     }
 
@@ -322,18 +328,17 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
         List<XYChart> charts = new ArrayList<>();
         // The default scene (srtm3-150km: 150 km, 20 ppd) is a point on both curves.
         List<String> range = ok.keySet().stream().filter(n -> n.startsWith("range-") || n.equals("srtm3-150km"))
-                .sorted(java.util.Comparator.comparingDouble(n -> byName.get(n).rangeKm())).toList();
+                .sorted(Comparator.comparingDouble(n -> byName.get(n).rangeKm())).toList();
         List<String> ppd = ok.keySet().stream().filter(n -> n.startsWith("ppd-") || n.equals("srtm3-150km"))
-                .sorted(java.util.Comparator.comparingDouble(n -> byName.get(n).ppd())).toList();
+                .sorted(Comparator.comparingDouble(n -> byName.get(n).ppd())).toList();
         if (range.size() >= 2) {
             charts.add(timeChart("time against range (3×3 SRTM3, 20 ppd)", "range, km", range, byName, ok, Case::rangeKm));
         }
         if (ppd.size() >= 2) {
             charts.add(timeChart("time against resolution (150 km)", "pixels per degree", ppd, byName, ok, Case::ppd));
         }
-        List<String> lod = ok.keySet().stream().filter(n -> byName.get(n).scene().startsWith("3×3") && byName.get(n)
-                .renderer().equals("opengl") && !Double.isNaN(ok.get(n).p99Rel())).sorted(java.util.Comparator
-                .comparingDouble(n -> byName.get(n).lodPx())).toList();
+        List<String> lod = ok.keySet().stream().filter(n -> (n.startsWith("srtm3-150km-lod-") || n.equals("srtm3-150km"))
+                && !Double.isNaN(ok.get(n).p99Rel())).sorted(Comparator.comparingDouble(n -> byName.get(n).lodPx())).toList();
         if (lod.size() >= 2) {
             XYChart chart = chart("level of detail: error against warm time (3×3, 150 km)", "warm render time, s",
                     "p99 relative distance error, %");
@@ -342,13 +347,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
             double[] ys = lod.stream().mapToDouble(n -> ok.get(n).p99Rel() * 100).toArray();
             chart.addSeries("GPU path, each point's LOD bound in px", xs, ys).setMarker(SeriesMarkers.CIRCLE);
             // Room around the points (XChart fits the axes to the data's extremes).
-            double x0 = java.util.Arrays.stream(xs).min().orElseThrow(), x1 = java.util.Arrays.stream(xs).max().orElseThrow();
-            double y0 = java.util.Arrays.stream(ys).min().orElseThrow(), y1 = java.util.Arrays.stream(ys).max().orElseThrow();
+            double x0 = Arrays.stream(xs).min().orElseThrow(), x1 = Arrays.stream(xs).max().orElseThrow();
+            double y0 = Arrays.stream(ys).min().orElseThrow(), y1 = Arrays.stream(ys).max().orElseThrow();
             chart.getStyler().setXAxisMin(x0 - 0.15 * (x1 - x0) - 0.02).setXAxisMax(x1 + 0.15 * (x1 - x0) + 0.02);
             chart.getStyler().setYAxisMin(Math.max(0, y0 - 0.2 * (y1 - y0) - 0.01)).setYAxisMax(y1 + 0.2 * (y1 - y0) + 0.01);
             chart.getStyler().setXAxisDecimalPattern("0.00");
             for (int i = 0; i < xs.length; i++) {
-                chart.addAnnotation(new org.knowm.xchart.AnnotationText(String.format(Locale.ROOT, "%.2g px",
+                chart.addAnnotation(new AnnotationText(String.format(Locale.ROOT, "%.2g px",
                         byName.get(lod.get(i)).lodPx()), xs[i], ys[i] + 0.06 * (y1 - y0) + 0.003, false));
             }
             charts.add(chart);
@@ -363,13 +368,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
 
     private static XYChart chart(String title, String x, String y) {
         XYChart chart = new XYChartBuilder().width(520).height(380).title(title).xAxisTitle(x).yAxisTitle(y).build();
-        chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
-        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
         return chart;
     }
 
     private static XYChart timeChart(String title, String x, List<String> names, Map<String, Case> cases,
-                                     Map<String, Result> results, java.util.function.ToDoubleFunction<Case> axis) {
+                                     Map<String, Result> results, ToDoubleFunction<Case> axis) {
         XYChart chart = chart(title, x, "time, s");
         double[] xs = names.stream().mapToDouble(n -> axis.applyAsDouble(cases.get(n))).toArray();
         chart.addSeries("cold (fresh JVM)", xs, names.stream().mapToDouble(n -> results.get(n).coldMillis() / 1e3).toArray())

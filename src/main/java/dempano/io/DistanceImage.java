@@ -33,13 +33,12 @@ public final class DistanceImage {
             return 0xffffff;
         }
         double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - logMin) * perLog;
-        double[][] stops = STOPS;
-        double x = t * (stops.length - 1);
-        int i = Math.min(stops.length - 2, (int) Math.floor(x));
+        double x = t * (STOPS.length - 1);
+        int i = Math.min(STOPS.length - 2, (int) Math.floor(x));
         double f = x - i;
-        int r = (int) Math.round(255 * (stops[i][0] + f * (stops[i + 1][0] - stops[i][0])));
-        int g = (int) Math.round(255 * (stops[i][1] + f * (stops[i + 1][1] - stops[i][1])));
-        int b = (int) Math.round(255 * (stops[i][2] + f * (stops[i + 1][2] - stops[i][2])));
+        int r = (int) Math.round(255 * (STOPS[i][0] + f * (STOPS[i + 1][0] - STOPS[i][0])));
+        int g = (int) Math.round(255 * (STOPS[i][1] + f * (STOPS[i + 1][1] - STOPS[i][1])));
+        int b = (int) Math.round(255 * (STOPS[i][2] + f * (STOPS[i + 1][2] - STOPS[i][2])));
         return (r << 16) | (g << 8) | b;
     }
 
