@@ -88,6 +88,8 @@ public final class PanoramaRenderer implements AutoCloseable {
      *
      * @throws dempano.dem.DemException      for unreadable or (if so configured) missing tiles
      * @throws IllegalArgumentException      for a viewpoint without DEM data
+     * @throws InsufficientMemoryException   before rendering, when the request needs more heap than the JVM may use
+     * @throws dempano.render.RenderFailedException when the GL thread fails (the renderer is then closed)
      */
     public Panorama render(PanoramaRequest req, Consumer<String> progress) {
         Map<String, Double> timings = new LinkedHashMap<>();
@@ -95,6 +97,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("loading tiles");
         Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
         t = lap(timings, "tiles", t);
+        long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
+        MemoryEstimate.of(req, gl != null, 2 * samplesPerTile * mosaic.tilesUsed().size())
+                .check(Runtime.getRuntime().maxMemory());
 
         Viewpoint eye = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())

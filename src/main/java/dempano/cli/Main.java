@@ -7,6 +7,7 @@ import dempano.dem.DemException;
 import dempano.dem.DemoTerrain;
 import dempano.dem.MissingTilePolicy;
 import dempano.geo.Refraction;
+import dempano.io.OutputSet;
 import dempano.io.PanoramaWriter;
 import dempano.panorama.DepthMode;
 import dempano.panorama.ElevationRange;
@@ -118,7 +119,8 @@ public final class Main implements Callable<Integer> {
                 return 2;
             }
             if (ex instanceof DemException || ex instanceof GlUnavailableException || ex instanceof java.io.IOException
-                    || ex instanceof dempano.summits.SummitFormatException) {
+                    || ex instanceof dempano.summits.SummitFormatException || ex instanceof dempano.InsufficientMemoryException
+                    || ex instanceof dempano.render.RenderFailedException) {
                 err.println("dempano: " + ex.getMessage());
                 return 1;
             }
@@ -126,7 +128,20 @@ public final class Main implements Callable<Integer> {
             ex.printStackTrace(err);
             return 1;
         });
-        return cl.execute(args);
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
+            cl.getErr().println("dempano: " + outOfMemoryMessage(e));
+            return 1;
+        }
+    }
+
+    /** The way out of an out-of-memory failure, with the heap size in use. */
+    static String outOfMemoryMessage(OutOfMemoryError e) {
+        return String.format(Locale.ROOT, "out of memory (%s; Java heap limit %.1f GB): lower --ppd, --elevation-range "
+                + "or --range-km, or give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg", e.getMessage(),
+                Runtime.getRuntime().maxMemory() / 1e9, Math.max(2, 2 * (int) Math.ceil(Runtime.getRuntime().maxMemory() / 1e9)));
     }
 
     @Override
@@ -159,11 +174,11 @@ public final class Main implements Callable<Integer> {
                 .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
                 .withSupersampling(supersampling).withViews(views).withMissingTiles(policy)
                 .withLodErrorPx(lodErrorPx).withColour(!noColour).withDistance(!noDistance);
+        dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
-        dempano.io.AtomicFiles.checkWritable(Path.of(out + ".json")); // fail before rendering, not after
         DemDirectory dem = new DemDirectory(dir);
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
@@ -179,47 +194,60 @@ public final class Main implements Callable<Integer> {
         }
         if (summitsFile != null) {
             // Read before rendering: a bad list fails fast.
-            summitList = dempano.summits.SummitReader.read(summitsFile, lenientSummits);
+            try {
+                summitList = dempano.summits.SummitReader.read(summitsFile, lenientSummits);
+            } catch (java.io.IOException e) {
+                throw new java.io.IOException("cannot read the summit list " + summitsFile + ": "
+                        + dempano.io.IoMessages.reason(e), e);
+            }
             for (String skipped : summitList.skipped()) {
                 System.err.println("  summit list " + summitsFile + ": skipped " + skipped);
             }
         }
-        long t0 = System.nanoTime();
-        System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
         if (repeat < 1 || repeat > 1000) {
             throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
         }
-        Panorama p = null;
-        java.util.List<String> table = new java.util.ArrayList<>();
         boolean reference = switch (renderer.toLowerCase(Locale.ROOT)) {
             case "opengl", "gl" -> false;
             case "reference", "cpu" -> true;
             default -> throw new IllegalArgumentException("--renderer must be opengl or reference, got " + renderer);
         };
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
-            System.err.println("  renderer: " + r.glRenderer());
-            for (int i = 1; i <= repeat; i++) {
-                long start = System.nanoTime();
-                p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
-                table.add(String.format(Locale.ROOT, "| %d | %s | %.0f | %s |", i, i == 1 ? "cold" : "warm",
-                        (System.nanoTime() - start) / 1e6, p.metadata().timingsMillis().entrySet().stream()
-                                .map(e -> e.getKey() + " " + Math.round(e.getValue())).collect(java.util.stream.Collectors.joining(", "))));
+        PanoramaWriter.Options writing = new PanoramaWriter.Options(pfm, summitList == null ? null : java.util.List.of(),
+                labelOptions);
+        long t0 = System.nanoTime();
+        java.util.List<java.nio.file.Path> files;
+        Panorama p = null;
+        // The output set is opened before rendering: an unwritable destination is found first, and
+        // after any failure the previous outputs stay as they were.
+        try (OutputSet set = OutputSet.open(out)) {
+            set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
+            System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
+            java.util.List<String> table = new java.util.ArrayList<>();
+            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+                System.err.println("  renderer: " + r.glRenderer());
+                for (int i = 1; i <= repeat; i++) {
+                    long start = System.nanoTime();
+                    p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
+                    table.add(String.format(Locale.ROOT, "| %d | %s | %.0f | %s |", i, i == 1 ? "cold" : "warm",
+                            (System.nanoTime() - start) / 1e6, p.metadata().timingsMillis().entrySet().stream()
+                                    .map(e -> e.getKey() + " " + Math.round(e.getValue())).collect(java.util.stream.Collectors.joining(", "))));
+                }
             }
-        }
-        if (repeat > 1) {
-            System.out.println("| run | state | total ms | stages ms |");
-            System.out.println("|---|---|---|---|");
-            table.forEach(System.out::println);
-        }
-        for (String w : p.metadata().warnings()) {
-            System.err.println("  warning: " + w);
-        }
-        var files = new java.util.ArrayList<>(PanoramaWriter.write(p, out, pfm));
-        if (summitList != null) {
-            var sightings = p.summits(summitList);
-            files.addAll(dempano.io.SummitWriter.write(p, sightings, out, labelOptions));
-            System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),
-                    sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
+            if (repeat > 1) {
+                System.out.println("| run | state | total ms | stages ms |");
+                System.out.println("|---|---|---|---|");
+                table.forEach(System.out::println);
+            }
+            for (String w : p.metadata().warnings()) {
+                System.err.println("  warning: " + w);
+            }
+            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null : p.summits(summitList);
+            files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(pfm, sightings, labelOptions));
+            set.commit();
+            if (sightings != null) {
+                System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),
+                        sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
+            }
         }
         System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, files);
         System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms%n",

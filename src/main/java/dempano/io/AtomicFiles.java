@@ -8,9 +8,14 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 
-/** Writes a file completely or not at all: to a temporary file beside it, then an atomic rename. */
+/**
+ * Writes one file completely or not at all: to a temporary file beside it (mode from the umask, as
+ * any new file), then an atomic rename. Sets of files go through {@link OutputSet}.
+ */
 public final class AtomicFiles {
+    private static final java.security.SecureRandom RANDOM = new java.security.SecureRandom();
     private AtomicFiles() {
     }
 
@@ -26,11 +31,14 @@ public final class AtomicFiles {
      */
     public static void checkWritable(Path target) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
-        if (dir == null || !Files.isDirectory(dir)) {
-            throw new IOException("cannot write " + target + ": directory " + dir + " does not exist");
+        if (dir == null || !Files.exists(dir)) {
+            throw new IOException("cannot write " + target + ": folder " + dir + " does not exist");
+        }
+        if (!Files.isDirectory(dir)) {
+            throw new IOException("cannot write " + target + ": " + dir + " is a file, not a folder");
         }
         if (!Files.isWritable(dir)) {
-            throw new IOException("cannot write " + target + ": directory " + dir + " is not writable");
+            throw new IOException("cannot write " + target + ": folder " + dir + " is not writable");
         }
     }
 
@@ -43,9 +51,13 @@ public final class AtomicFiles {
         checkWritable(target);
         Path tmp;
         try {
-            tmp = Files.createTempFile(dir, "." + abs.getFileName(), ".part");
+            // Not Files.createTempFile: that makes the file mode 0600 whatever the umask.
+            tmp = dir.resolve("." + abs.getFileName() + "." + Long.toHexString(RANDOM.nextLong()) + ".part");
+            Files.newOutputStream(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
         } catch (AccessDeniedException e) {
             throw new IOException("cannot write " + target + ": permission denied in " + dir, e);
+        } catch (IOException e) {
+            throw new IOException("cannot write " + target + ": " + IoMessages.reason(e), e);
         }
         boolean done = false;
         try {
@@ -56,6 +68,8 @@ public final class AtomicFiles {
                 Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+            } catch (java.nio.file.FileSystemException e) {
+                throw new IOException("cannot write " + target + ": " + IoMessages.reason(e), e);
             }
             done = true;
         } finally {

@@ -12,30 +12,40 @@ public final class FloatArrayWriter {
     private FloatArrayWriter() {
     }
 
-    /** NPY v1.0, little-endian float32, shape (rows, cols), C order. */
+    /** NPY v1.0, little-endian float32, shape (rows, cols), C order; written atomically. */
     public static void writeNpy(Path file, FloatBuffer data, int rows, int cols) throws IOException {
+        AtomicFiles.write(file, npy(data, rows, cols));
+    }
+
+    /** PFM (see {@link #pfm}); written atomically. */
+    public static void writePfm(Path file, FloatBuffer data, int rows, int cols) throws IOException {
+        AtomicFiles.write(file, pfm(data, rows, cols));
+    }
+
+    /** The bytes of an NPY v1.0 file: little-endian float32, shape (rows, cols), C order. */
+    public static AtomicFiles.Body npy(FloatBuffer data, int rows, int cols) {
         check(data, rows, cols);
         String dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + rows + ", " + cols + "), }";
         int preamble = 10; // magic (6) + version (2) + header length (2)
         int total = preamble + dict.length() + 1;
         int pad = (64 - total % 64) % 64;
         String header = dict + " ".repeat(pad) + "\n";
-        AtomicFiles.write(file, out -> {
+        return out -> {
             out.write(new byte[] {(byte) 0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0});
             out.write(header.length() & 0xff);
             out.write((header.length() >> 8) & 0xff);
             out.write(header.getBytes(StandardCharsets.US_ASCII));
             writeRows(out, data, rows, cols, false);
-        });
+        };
     }
 
-    /** Portable float map, little-endian (scale −1), rows bottom to top. */
-    public static void writePfm(Path file, FloatBuffer data, int rows, int cols) throws IOException {
+    /** The bytes of a portable float map, little-endian (scale −1), rows bottom to top. */
+    public static AtomicFiles.Body pfm(FloatBuffer data, int rows, int cols) {
         check(data, rows, cols);
-        AtomicFiles.write(file, out -> {
+        return out -> {
             out.write(("Pf\n" + cols + " " + rows + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
             writeRows(out, data, rows, cols, true);
-        });
+        };
     }
 
     private static void check(FloatBuffer data, int rows, int cols) {

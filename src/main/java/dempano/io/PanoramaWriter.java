@@ -6,6 +6,7 @@ import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.PanoramaMetadata;
+import dempano.summits.SummitSighting;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -13,112 +14,159 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.FutureTask;
 import javax.imageio.ImageIO;
 
 /**
- * Writes a panorama's files for a prefix P: {@code P.png} (when it has colour), {@code P-distance.npy} (or {@code .pfm})
- * and {@code P-distance.png} (when it has distances), {@code P-<layer>.npy} and {@code P.json}. Each file is written atomically.
+ * Writes a panorama's files for a prefix P as one {@link OutputSet}: {@code P.png} (when it has
+ * colour), {@code P-distance.npy} (or {@code .pfm}) and {@code P-distance.png} (when it has
+ * distances), {@code P-<layer>.npy}, the summit files when summits are given, and {@code P.json}
+ * (listing them). After any failure the previous set stays as it was; see {@link OutputSet}.
  */
 public final class PanoramaWriter {
     private PanoramaWriter() {
     }
 
     /**
-     * Writes the files; the distance picture is drawn and encoded on a second thread meanwhile (PNG
-     * encoding is single-threaded and takes about as long as the colour picture's).
+     * What is written besides the panorama's own files.
      *
-     * @return the files written
+     * @param pfm     distance map as {@code .pfm} instead of {@code .npy}
+     * @param summits sightings for {@code P-summits.json/.csv} and {@code P-labels.png}; null for none
+     * @param labels  label density of {@code P-labels.png}
      */
+    public record Options(boolean pfm, List<SummitSighting> summits, SummitWriter.LabelOptions labels) {
+        public static final Options DEFAULT = new Options(false, null, SummitWriter.LabelOptions.DEFAULT);
+    }
+
+    /** As {@link #write(Panorama, String, Options)} with no summits. */
     public static List<Path> write(Panorama p, String prefix, boolean pfm) throws IOException {
+        return write(p, prefix, new Options(pfm, null, SummitWriter.LabelOptions.DEFAULT));
+    }
+
+    /**
+     * Writes the files as one set.
+     *
+     * @return the files written, {@code P.json} last
+     * @throws IllegalArgumentException for an empty prefix or one naming a folder
+     * @throws IOException naming the file and the reason; no file of the new set is then in place
+     */
+    public static List<Path> write(Panorama p, String prefix, Options options) throws IOException {
+        try (OutputSet set = OutputSet.open(prefix)) {
+            List<Path> files = stage(set, p, options);
+            set.commit();
+            return files;
+        }
+    }
+
+    /**
+     * The suffixes of the files a request will produce (to check the destination before rendering).
+     *
+     * @param colour   the panorama has colour
+     * @param distance the panorama has distances
+     */
+    public static List<String> suffixes(boolean colour, boolean distance, java.util.Set<Layer> layers, Options options) {
+        List<String> out = new ArrayList<>();
+        if (colour) {
+            out.add(".png");
+        }
+        if (distance) {
+            out.add("-distance." + (options.pfm() ? "pfm" : "npy"));
+            out.add("-distance.png");
+        }
+        layers.forEach(l -> out.add("-" + l.fileName() + ".npy"));
+        if (options.summits() != null) {
+            out.addAll(SummitWriter.suffixes(colour));
+        }
+        out.add(".json");
+        return out;
+    }
+
+    /**
+     * Writes every file of the panorama into an open set, {@code P.json} last (the caller commits).
+     * The distance picture is drawn and encoded on a second thread meanwhile (PNG encoding is
+     * single-threaded and takes about as long as the colour picture's); this returns or throws only
+     * after that thread has ended.
+     *
+     * @return the files' final paths
+     */
+    public static List<Path> stage(OutputSet set, Panorama p, Options options) throws IOException {
         List<Path> files = new ArrayList<>();
-        FutureTask<Path> distancePicture = null;
+        Path[] distancePicture = new Path[1];
+        Throwable[] pictureFailure = new Throwable[1];
+        Thread picture = null;
         if (p.hasDistance()) {
-            Path distPng = Path.of(prefix + "-distance.png");
-            distancePicture = new FutureTask<>(() -> {
-                AtomicFiles.write(distPng, out -> ImageIO.write(
-                        DistanceImage.render(p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
-                return distPng;
-            });
-            Thread t = new Thread(distancePicture, "dempano-distance-png");
-            t.setDaemon(true);
-            t.start();
+            picture = new Thread(() -> {
+                try {
+                    distancePicture[0] = set.write("-distance.png", out -> ImageIO.write(DistanceImage.render(
+                            p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
+                } catch (Throwable t) {
+                    pictureFailure[0] = t;
+                }
+            }, "dempano-distance-png");
+            picture.setDaemon(true);
+            picture.start();
         }
         Throwable failure = null;
         try {
             if (p.hasColour()) {
-                Path png = Path.of(prefix + ".png");
-                AtomicFiles.write(png, out -> {
+                files.add(set.write(".png", out -> {
                     if (!ImageIO.write(p.image(), "png", out)) {
                         throw new IOException("no PNG writer");
                     }
-                });
-                files.add(png);
+                }));
             }
             if (p.hasDistance()) {
-                Path dist = Path.of(prefix + "-distance." + (pfm ? "pfm" : "npy"));
-                if (pfm) {
-                    FloatArrayWriter.writePfm(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
-                } else {
-                    FloatArrayWriter.writeNpy(dist, p.distanceBuffer(), p.heightPx(), p.widthPx());
-                }
-                files.add(dist);
+                files.add(set.write("-distance." + (options.pfm() ? "pfm" : "npy"), options.pfm()
+                        ? FloatArrayWriter.pfm(p.distanceBuffer(), p.heightPx(), p.widthPx())
+                        : FloatArrayWriter.npy(p.distanceBuffer(), p.heightPx(), p.widthPx())));
             }
-        } catch (IOException | RuntimeException e) {
-            failure = e;
+        } catch (Throwable t) {
+            failure = t;
         }
-        if (distancePicture != null) {
+        if (picture != null) {
             // Never return (or throw) with the second thread still writing.
-            try {
-                files.add(await(distancePicture));
-            } catch (IOException | RuntimeException e) {
+            joinUninterruptibly(picture);
+            if (pictureFailure[0] != null) {
                 if (failure == null) {
-                    failure = e;
+                    failure = pictureFailure[0];
                 } else {
-                    failure.addSuppressed(e);
+                    failure.addSuppressed(pictureFailure[0]);
                 }
+            } else {
+                files.add(distancePicture[0]);
             }
         }
         if (failure instanceof IOException io) {
             throw io;
         } else if (failure instanceof RuntimeException re) {
             throw re;
+        } else if (failure instanceof Error e) {
+            throw e;
         }
         for (Layer l : p.layers()) {
-            Path f = Path.of(prefix + "-" + l.fileName() + ".npy");
-            FloatArrayWriter.writeNpy(f, p.layerBuffer(l), p.heightPx(), p.widthPx());
-            files.add(f);
+            files.add(set.write("-" + l.fileName() + ".npy", FloatArrayWriter.npy(p.layerBuffer(l), p.heightPx(), p.widthPx())));
         }
-        Path json = Path.of(prefix + ".json");
-        String text = metadataJson(p, files);
-        AtomicFiles.write(json, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
-        files.add(json);
+        if (options.summits() != null) {
+            files.addAll(SummitWriter.stage(set, p, options.summits(), options.labels()));
+        }
+        List<Path> listed = new ArrayList<>(files);
+        listed.add(set.target(".json"));
+        String text = metadataJson(p, listed);
+        files.add(set.write(".json", out -> out.write(text.getBytes(StandardCharsets.UTF_8))));
         return files;
     }
 
-    private static Path await(FutureTask<Path> task) throws IOException {
+    private static void joinUninterruptibly(Thread t) {
         boolean interrupted = false;
-        try {
-            while (true) {
-                try {
-                    return task.get();
-                } catch (InterruptedException e) {
-                    interrupted = true; // the file is being written: finish waiting, then restore the flag
-                }
+        while (true) {
+            try {
+                t.join();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true; // the file is being written: finish waiting, then restore the flag
             }
-        } catch (ExecutionException e) {
-            if (e.getCause() instanceof IOException io) {
-                throw io;
-            }
-            if (e.getCause() instanceof RuntimeException re) {
-                throw re;
-            }
-            throw new IOException("writing the distance picture failed", e.getCause());
-        } finally {
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 

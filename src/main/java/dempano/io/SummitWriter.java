@@ -66,24 +66,28 @@ public final class SummitWriter {
         }
     }
 
-    /** Writes the three files for prefix P (the labels only when the panorama has colour); returns their paths. */
-    public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix) throws IOException {
-        return write(p, sightings, prefix, LabelOptions.DEFAULT);
+    /** The suffixes of the files {@link #stage} writes. */
+    static List<String> suffixes(boolean colour) {
+        return colour ? List.of("-summits.json", "-summits.csv", "-labels.png") : List.of("-summits.json", "-summits.csv");
     }
 
-    /** As {@link #write(Panorama, List, String)}, with the label density given. */
-    public static List<Path> write(Panorama p, List<SummitSighting> sightings, String prefix, LabelOptions options)
+    /**
+     * Writes {@code P-summits.json}, {@code P-summits.csv} and (when the panorama has colour) the
+     * labelled {@code P-labels.png} into an output set (see {@link PanoramaWriter#write(Panorama, String, PanoramaWriter.Options)}).
+     *
+     * @return the paths the files will have once the set is committed
+     */
+    public static List<Path> stage(OutputSet set, Panorama p, List<SummitSighting> sightings, LabelOptions options)
             throws IOException {
-        Path json = Path.of(prefix + "-summits.json"), csv = Path.of(prefix + "-summits.csv"), png = Path.of(prefix + "-labels.png");
         String jsonText = json(sightings);
-        AtomicFiles.write(json, out -> out.write(jsonText.getBytes(StandardCharsets.UTF_8)));
+        Path json = set.write("-summits.json", out -> out.write(jsonText.getBytes(StandardCharsets.UTF_8)));
         String csvText = csv(sightings);
-        AtomicFiles.write(csv, out -> out.write(csvText.getBytes(StandardCharsets.UTF_8)));
+        Path csv = set.write("-summits.csv", out -> out.write(csvText.getBytes(StandardCharsets.UTF_8)));
         if (!p.hasColour()) {
             return List.of(json, csv);
         }
         BufferedImage labelled = labels(p, sightings, options);
-        AtomicFiles.write(png, out -> ImageIO.write(labelled, "png", out));
+        Path png = set.write("-labels.png", out -> ImageIO.write(labelled, "png", out));
         return List.of(json, csv, png);
     }
 

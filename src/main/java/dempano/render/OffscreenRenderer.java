@@ -59,27 +59,29 @@ public final class OffscreenRenderer {
     // GLFW allows one context owner per process here (closing one terminates GLFW for all), so every
     // user shares one context, released when the last user closes it.
     private static OffscreenRenderer shared;
-    private static int users;
+    /** Handles open on this context (guarded by the class lock). */
+    private int users;
 
     /**
-     * A handle on the process's GL context, created on first use. Each handle must be closed; the
-     * context ends with the last.
+     * A handle on the process's GL context, created on first use (and anew after a failed one). Each
+     * handle must be closed; a context ends with the last of its handles.
      *
      * @throws GlUnavailableException naming what is missing when no context can be created
      */
     public static synchronized Handle acquire() {
         if (shared == null || shared.closed) {
             shared = open();
-            users = 0;
         }
-        users++;
+        shared.users++;
         return new Handle(shared);
     }
 
-    private static synchronized void release() {
-        if (--users == 0 && shared != null) {
-            shared.close();
-            shared = null;
+    private static synchronized void release(OffscreenRenderer r) {
+        if (--r.users == 0) {
+            r.close();
+            if (shared == r) {
+                shared = null;
+            }
         }
     }
 
@@ -104,7 +106,7 @@ public final class OffscreenRenderer {
             synchronized (OffscreenRenderer.class) {
                 if (!closed) {
                     closed = true;
-                    release();
+                    release(renderer);
                 }
             }
         }
@@ -203,25 +205,104 @@ public final class OffscreenRenderer {
      */
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release, boolean colour, boolean readRangeTarget, long[] drawAndReadNanos) {
-        if (closed) {
-            throw new IllegalStateException("renderer is closed");
-        }
         if (mode == DepthMode.SHADER_RANGE && !readRangeTarget) {
             throw new IllegalArgumentException("the shader-range mode reads the range target");
         }
-        Future<ViewCapture[]> f = app.enqueue(() -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release,
+        return onGlThread("rendering", () -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release,
                 colour, readRangeTarget, drawAndReadNanos));
+    }
+
+    /** A GL task's result or what it threw (never thrown on the GL thread: jME would log it and hang the caller). */
+    private record Outcome<T>(T value, Throwable failure) {
+    }
+
+    /**
+     * Runs work on the GL thread and waits for it. Whatever the work throws reaches the caller; an
+     * {@link Error} there (out of memory above all) leaves GL state unknown, so the renderer is then
+     * closed and says so on every later call. A GL thread that ended while the caller waited is
+     * reported instead of waited on forever.
+     */
+    private <T> T onGlThread(String what, java.util.concurrent.Callable<T> work) {
+        checkUsable();
+        Future<Outcome<T>> f = app.enqueue(() -> {
+            try {
+                return new Outcome<>(work.call(), null);
+            } catch (Throwable t) {
+                if (t instanceof Error) {
+                    app.fatal = t;
+                }
+                return new Outcome<>(null, t);
+            }
+        });
+        Outcome<T> outcome;
         try {
-            return f.get();
+            while (true) {
+                try {
+                    outcome = f.get(200, TimeUnit.MILLISECONDS);
+                    break;
+                } catch (TimeoutException e) {
+                    Thread t = app.glThread;
+                    if (t == null || !t.isAlive() || app.fatal != null) {
+                        Throwable cause = app.fatal;
+                        markBroken();
+                        throw new RenderFailedException("the OpenGL thread ended while " + what
+                                + (cause == null ? "" : " (" + cause + ")") + "; open a new renderer", cause);
+                    }
+                }
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while rendering", e);
+            throw new IllegalStateException("interrupted while " + what, e);
         } catch (ExecutionException e) {
-            Throwable c = e.getCause();
-            if (c instanceof RuntimeException re) {
-                throw re;
+            throw new IllegalStateException(what + " failed: " + e.getCause(), e.getCause());
+        }
+        Throwable failure = outcome.failure();
+        if (failure == null) {
+            return outcome.value();
+        }
+        if (failure instanceof OutOfMemoryError oom) {
+            markBroken();
+            throw oom; // the caller's thread reports it (the CLI with the way out)
+        }
+        if (failure instanceof Error err) {
+            markBroken();
+            throw new RenderFailedException("the OpenGL thread failed while " + what + ": " + err + "; open a new renderer", err);
+        }
+        if (failure instanceof RuntimeException re) {
+            throw re;
+        }
+        throw new IllegalStateException(what + " failed: " + failure, failure);
+    }
+
+    /** Throws when the GL thread failed earlier or the renderer is closed. */
+    private void checkUsable() {
+        Throwable fatal = app.fatal;
+        if (fatal != null) {
+            throw new RenderFailedException("this renderer's OpenGL thread failed earlier (" + fatal
+                    + "); open a new renderer", fatal);
+        }
+        if (closed) {
+            throw new IllegalStateException("renderer is closed");
+        }
+        Thread t = app.glThread;
+        if (t != null && !t.isAlive()) {
+            throw new RenderFailedException("this renderer's OpenGL thread has ended; open a new renderer", null);
+        }
+    }
+
+    /** After a failure on the GL thread: no more work goes there; the next acquire makes a new context. */
+    private void markBroken() {
+        if (app.fatal == null) {
+            app.fatal = new IllegalStateException("the OpenGL thread ended");
+        }
+        synchronized (OffscreenRenderer.class) {
+            if (shared == this) {
+                shared = null; // the handles still held release nothing of a new context
             }
-            throw new IllegalStateException("rendering failed: " + c, c);
+        }
+        if (!closed) {
+            closed = true;
+            app.stop(false);
         }
     }
 
@@ -230,28 +311,25 @@ public final class OffscreenRenderer {
      * thread; returns when done).
      */
     public void release(java.util.Collection<? extends Spatial> parts) {
-        if (parts.isEmpty() || closed) {
+        if (parts.isEmpty() || closed || app.fatal != null) {
             return;
         }
-        Future<Void> f = app.enqueue(() -> {
+        onGlThread("releasing buffers", () -> {
             for (Spatial s : parts) {
                 GlApp.deleteGlBuffers(app.getRenderer(), s);
                 dempano.terrain.TerrainBuilder.destroyBuffers(s);
             }
             return null;
         });
-        try {
-            f.get();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while releasing buffers", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("releasing buffers failed: " + e.getCause(), e.getCause());
-        }
     }
 
     private void close() {
-        if (!closed) {
+        if (closed) {
+            Thread t = app.glThread;
+            if (t != null && t.isAlive() && t != Thread.currentThread()) {
+                app.stop(false); // a broken renderer: make sure its thread goes
+            }
+        } else {
             closed = true;
             app.stop(true);
             // stop(true) returns once the context is marked destroyed, which jME does before its thread
@@ -289,6 +367,8 @@ public final class OffscreenRenderer {
     private static final class GlApp extends LegacyApplication {
         final CompletableFuture<String[]> ready = new CompletableFuture<>();
         volatile Thread glThread;
+        /** Set when an Error struck the GL thread (its GL state is then unknown). */
+        volatile Throwable fatal;
         private FrameBuffer fb;
         private int fbWidth, fbHeight;
         private boolean fbReversed;
@@ -316,6 +396,9 @@ public final class OffscreenRenderer {
         public void handleError(String errMsg, Throwable t) {
             // jME would log and carry on (exit code 0); make the failure reach the caller instead.
             LOG.log(Level.FINE, errMsg, t);
+            if (ready.isDone() && fatal == null) {
+                fatal = t != null ? t : new IllegalStateException(errMsg);
+            }
             if (!ready.isDone()) {
                 ready.completeExceptionally(new IllegalStateException(errMsg + (t != null ? ": " + t.getMessage() : ""), t));
             }

@@ -1,0 +1,78 @@
+package dempano;
+
+import dempano.panorama.PanoramaGeometry;
+import dempano.panorama.ViewLayout;
+import java.util.Locale;
+
+/**
+ * The Java heap a panorama needs, estimated before rendering so that a request too large for the
+ * heap is refused with the figures instead of failing half-way with an {@link OutOfMemoryError}.
+ *
+ * <p>Model (bytes), from what the pipeline holds at its two peaks: while stitching, every view's
+ * colour, range and inverse depth (12 per view pixel, {@code viewPixels}) besides the panorama's
+ * colour and distance (8 per panorama pixel); while writing, the panorama, its layers (4 per pixel
+ * each) and the pictures being encoded (colour, distance picture, labels: 12 per pixel). Added to the
+ * larger peak: the tiles the mosaic holds and a base for the JVM, jME, the terrain mesh and caches.
+ * The base and the garbage-collector headroom were measured by searching the least {@code -Xmx} at
+ * which the CLI renders and writes (docs and figures: README, "Memory").
+ *
+ * @param viewPixels     pixels of all views together (0 for the CPU reference)
+ * @param panoramaPixels pixels of the panorama before any automatic crop
+ * @param layers         extra per-pixel layers requested
+ * @param tileBytes      bytes of the tiles the range needs
+ */
+public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, long tileBytes) {
+    /** JVM, jME, shaders, terrain mesh and caches, bytes (measured; see the class comment). */
+    static final long BASE_BYTES = 150L << 20;
+    /** Heap the collector needs beyond the live data to keep going (measured; see the class comment). */
+    static final double HEADROOM = 1.25;
+
+    /** The estimate for a request (views as the OpenGL path lays them out, or none for the reference). */
+    public static MemoryEstimate of(PanoramaRequest req, boolean withViews, long tileBytes) {
+        PanoramaGeometry g = PanoramaGeometry.of(req.pixelsPerDegree(), req.elevationRange().bottomDeg(),
+                req.elevationRange().topDeg());
+        long views = 0;
+        if (withViews) {
+            ViewLayout layout = ViewLayout.forPanorama(g, req.views(), req.supersampling());
+            views = (long) req.views() * layout.widthPx() * layout.heightPx();
+        }
+        return new MemoryEstimate(views, (long) g.widthPx() * g.heightPx(), req.layers().size(), tileBytes);
+    }
+
+    /** Bytes held while the views are stitched. */
+    public long stitchingBytes() {
+        return 12 * viewPixels + 8 * panoramaPixels;
+    }
+
+    /** Bytes held while the files are written. */
+    public long writingBytes() {
+        return (20L + 4L * layers) * panoramaPixels;
+    }
+
+    /** The heap the request needs, bytes: live data at the larger peak plus base, times the collector's headroom. */
+    public long heapBytes() {
+        return (long) (HEADROOM * (BASE_BYTES + tileBytes + Math.max(stitchingBytes(), writingBytes())));
+    }
+
+    /**
+     * Refuses a request that needs more than {@code maxHeapBytes}.
+     *
+     * @throws InsufficientMemoryException with the figures and the way out
+     */
+    public void check(long maxHeapBytes) {
+        long need = heapBytes();
+        if (need <= maxHeapBytes) {
+            return;
+        }
+        throw new InsufficientMemoryException(String.format(Locale.ROOT,
+                "this panorama needs about %.1f GB of Java heap (%s) but the limit is %.1f GB: lower the pixels per "
+                        + "degree (--ppd; half the ppd needs a quarter) or the elevation range (--elevation-range), or "
+                        + "give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg",
+                need / 1e9, breakdown(), maxHeapBytes / 1e9, (int) Math.ceil(need / (double) (1L << 30)) + 1), this);
+    }
+
+    private String breakdown() {
+        return String.format(Locale.ROOT, "%.0f M view pixels, %.0f M panorama pixels%s, tiles %.0f MB",
+                viewPixels / 1e6, panoramaPixels / 1e6, layers > 0 ? ", " + layers + " layers" : "", tileBytes / 1e6);
+    }
+}
