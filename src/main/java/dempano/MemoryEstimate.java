@@ -13,8 +13,11 @@ import java.util.Locale;
  * colour and distance (8 per panorama pixel); while writing, the panorama, its layers (4 per pixel
  * each) and the pictures being encoded (colour, distance picture, labels: 12 per pixel). Added to the
  * larger peak: the tiles the mosaic holds and a base for the JVM, jME, the terrain mesh and caches.
- * The base and the garbage-collector headroom were measured by searching the least {@code -Xmx} at
- * which the CLI renders and writes (docs and figures: README, "Memory").
+ * The base and the headroom were set from the least {@code -Xmx} at which the CLI renders and writes
+ * (bisection, 7 % steps): demo scene at 10, 30 and 50 px/° needed 133, 508 and 1268 MB, estimated
+ * 165, 610 and 1483 MB; Mount Washington at 20 px/°, 100 km, needed 234 MB, estimated 333 MB. So a
+ * request the estimate accepts runs, and one it refuses would need at least about 85 % of the
+ * estimate. Direct buffers (one view's read-back, the terrain mesh) count against their own limit.
  *
  * @param viewPixels     pixels of all views together (0 for the CPU reference)
  * @param panoramaPixels pixels of the panorama before any automatic crop
@@ -23,9 +26,9 @@ import java.util.Locale;
  */
 public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, long tileBytes) {
     /** JVM, jME, shaders, terrain mesh and caches, bytes (measured; see the class comment). */
-    static final long BASE_BYTES = 150L << 20;
+    static final long BASE_BYTES = 100L << 20;
     /** Heap the collector needs beyond the live data to keep going (measured; see the class comment). */
-    static final double HEADROOM = 1.25;
+    static final double HEADROOM = 1.1;
 
     /** The estimate for a request (views as the OpenGL path lays them out, or none for the reference). */
     public static MemoryEstimate of(PanoramaRequest req, boolean withViews, long tileBytes) {

@@ -158,15 +158,24 @@ class OutputChoiceRenderTest {
     }
 
     @Test
-    void anUnwritableOutputNamesTheFileAndLeavesNoWriterRunning(@TempDir Path dir) {
+    void anUnwritableOutputNamesTheFileAndLeavesNoWriterRunning(@TempDir Path dir) throws Exception {
         Panorama p = gl.render(request(30));
         Path missing = dir.resolve("no-such-folder");
         java.io.IOException e = assertThrows(java.io.IOException.class,
                 () -> PanoramaWriter.write(p, missing.resolve("p").toString(), false));
         assertTrue(e.getMessage().contains(missing.toString()), e.getMessage());
-        assertFalse(Thread.getAllStackTraces().keySet().stream().anyMatch(t -> t.getName().equals("dempano-distance-png")),
-                "the distance picture's thread finished before write returned");
         assertFalse(Files.exists(missing));
+        // The colour file fails while the distance picture's thread is writing: write returns only
+        // after that thread has ended (joined, not just its result delivered), and no file is left.
+        Files.createDirectory(dir.resolve("p.png"));
+        java.io.IOException blocked = assertThrows(java.io.IOException.class,
+                () -> PanoramaWriter.write(p, dir.resolve("p").toString(), false));
+        assertEquals("cannot write " + dir.resolve("p.png") + ": a folder of that name is in the way", blocked.getMessage());
+        assertFalse(Thread.getAllStackTraces().keySet().stream().anyMatch(t -> t.getName().equals("dempano-distance-png")),
+                "the distance picture's thread ended before write returned");
+        try (var left = Files.list(dir)) {
+            assertEquals(List.of("p.png"), left.map(f -> f.getFileName().toString()).toList(), "no file of the new set");
+        }
     }
 
     @Test

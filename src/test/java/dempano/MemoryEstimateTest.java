@@ -1,0 +1,53 @@
+package dempano;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Layer;
+import java.util.EnumSet;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** The estimate against the least heap measured for the same requests, and its refusal message. */
+class MemoryEstimateTest {
+    /**
+     * Rows: ppd, least -Xmx measured (MB) for the demo scene with the CLI (renders and writes). The
+     * estimate must cover the measurement (accepted requests run) by less than 35 % (few needless refusals).
+     */
+    @ParameterizedTest
+    @CsvSource({"10, 133", "30, 508", "50, 1268"})
+    void theEstimateCoversTheMeasuredLeastHeapWithoutMuchWaste(double ppd, long measuredMb) {
+        MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(ppd), true, 4 * 2_884_802L);
+        double ratio = e.heapBytes() / (measuredMb * 1024.0 * 1024.0);
+        assertTrue(ratio >= 1 && ratio < 1.35, "estimate / measured = " + ratio);
+    }
+
+    @Test
+    void picturesAndLayersCountAsThePipelineHoldsThem() {
+        PanoramaRequest req = PanoramaRequest.at(0, 0).withPixelsPerDegree(10)
+                .withElevationRange(new ElevationRange(-10, 10, false));
+        MemoryEstimate reference = MemoryEstimate.of(req, false, 0);
+        assertEquals(0, reference.viewPixels());
+        assertEquals(3600L * 200, reference.panoramaPixels());
+        assertEquals(20L * 3600 * 200, reference.writingBytes(), "writing is the peak without views");
+        MemoryEstimate layered = MemoryEstimate.of(req.withLayers(EnumSet.of(Layer.ELEVATION, Layer.LATITUDE)), false, 0);
+        assertEquals(reference.writingBytes() + 2 * 4L * 3600 * 200, layered.writingBytes());
+        MemoryEstimate gl = MemoryEstimate.of(req, true, 0);
+        assertTrue(gl.viewPixels() >= reference.panoramaPixels(), "views cover the panorama");
+        assertEquals(12 * gl.viewPixels() + 8 * gl.panoramaPixels(), gl.stitchingBytes());
+    }
+
+    @Test
+    void aRequestBeyondTheHeapIsRefusedWithTheFiguresAndTheWayOut() {
+        MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(60).withRangeMetres(30_000), true, 0);
+        InsufficientMemoryException x = assertThrows(InsufficientMemoryException.class, () -> e.check(400L << 20));
+        assertTrue(x.getMessage().startsWith(String.format(java.util.Locale.ROOT, "this panorama needs about %.1f GB of Java heap",
+                e.heapBytes() / 1e9)), x.getMessage());
+        assertTrue(x.getMessage().contains("but the limit is 0.4 GB") && x.getMessage().contains("--ppd")
+                && x.getMessage().contains("DEMPANO_OPTS=-Xmx"), x.getMessage());
+        e.check(e.heapBytes()); // exactly enough: accepted
+    }
+}
