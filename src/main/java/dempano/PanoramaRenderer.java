@@ -86,7 +86,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     /**
      * Renders a panorama, reporting each stage as it starts.
      *
-     * @throws dempano.dem.DemException      for unreadable or (if so configured) missing tiles
+     * @throws dempano.dem.DemException      for unreadable or ambiguous tiles, and missing ones as the request's
+     *                                       {@link dempano.dem.MissingTilePolicy} says
      * @throws IllegalArgumentException      for a viewpoint without DEM data
      */
     public Panorama render(PanoramaRequest req, Consumer<String> progress) {
@@ -94,6 +95,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         long t = System.nanoTime();
         progress.accept("loading tiles");
         Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
+        req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
         t = lap(timings, "tiles", t);
 
         Viewpoint eye = Double.isNaN(req.altitudeMetres())
