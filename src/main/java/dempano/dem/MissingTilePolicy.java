@@ -35,8 +35,8 @@ public enum MissingTilePolicy {
         }
         String where = mosaic.sourceDescription();
         if (mosaic.tilesUsed().isEmpty()) {
-            throw new DemException("no DEM data around " + latDeg + ", " + lonDeg + ": none of the " + mosaic.tilesMissing().size()
-                    + " tiles needed within range " + mosaic.tilesMissing() + " is in " + where
+            throw new DemException("no DEM data around " + latDeg + ", " + lonDeg + ": none of the tiles needed within range "
+                    + mosaic.tilesMissing() + " is in " + where
                     + " (wrong DEM folder, or open sea?); add the tiles, or give --missing-tiles sea to render sea level");
         }
         if (Double.isNaN(altitudeMetres)) {

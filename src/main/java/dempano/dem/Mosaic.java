@@ -10,7 +10,7 @@ import java.util.Locale;
  * edge row/column, which appears once in the grid. Row 0 is the northern edge, column 0 the
  * western edge; the spacing is 1/{@link #intervalsPerDegree()} degree in both directions.
  * Samples of tiles the range circle does not touch are {@code NaN} (not loaded); missing tiles are
- * sea level (0 m) under {@link MissingTilePolicy#SEA_LEVEL}. Immutable.
+ * sea level (0 m) under {@link MissingTilePolicy#SEA_LEVEL} and {@link MissingTilePolicy#AUTO}. Immutable.
  *
  * <p>The grid is a view on the tiles, not a copy: each sample is read from the tile that holds it,
  * so a block of 7×9 SRTM1 tiles of which most are sea costs the memory of its present tiles only,

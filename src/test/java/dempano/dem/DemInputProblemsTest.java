@@ -113,7 +113,7 @@ class DemInputProblemsTest {
                 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true, List.of("{dir}/N43E007.hgt.zip", "zip holds no .hgt file")));
         // Missing tiles.
         t.add(Arguments.of("auto: no tile at all", (Setup) d -> tile(d, "N10E010.hgt"), 43.5, 7.05, MissingTilePolicy.AUTO,
-                Double.NaN, true, List.of("none of the 2 tiles needed", "[N43E006, N43E007]", "is in {dir}", "--missing-tiles sea")));
+                Double.NaN, true, List.of("none of the tiles needed within range [N43E006, N43E007]", "is in {dir}", "--missing-tiles sea")));
         t.add(Arguments.of("auto: no tile at all, even with an altitude", (Setup) d -> { }, 43.5, 7.5, MissingTilePolicy.AUTO,
                 1000.0, true, List.of("[N43E007]", "{dir}")));
         t.add(Arguments.of("auto: the viewpoint's tile missing", (Setup) d -> tile(d, "N43E006.hgt"), 43.5, 7.05,
