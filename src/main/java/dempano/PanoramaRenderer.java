@@ -86,7 +86,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     /**
      * Renders a panorama, reporting each stage as it starts.
      *
-     * @throws dempano.dem.DemException      for unreadable or (if so configured) missing tiles
+     * @throws dempano.dem.DemException      for unreadable or ambiguous tiles, and missing ones as the request's
+     *                                       {@link dempano.dem.MissingTilePolicy} says
      * @throws IllegalArgumentException      for a viewpoint without DEM data
      * @throws InsufficientMemoryException   before rendering, when the request needs more heap than the JVM may use
      * @throws dempano.render.RenderFailedException when the GL thread fails (the renderer is then closed)
@@ -96,6 +97,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         long t = System.nanoTime();
         progress.accept("loading tiles");
         Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
+        req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
         t = lap(timings, "tiles", t);
         long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
         MemoryEstimate.of(req, gl != null, 2 * samplesPerTile * mosaic.tilesUsed().size())

@@ -29,7 +29,8 @@ import java.util.Set;
  * @param nearMetres        near plane (default 1 m)
  * @param supersampling     view pixels per panorama pixel, linear (default 1)
  * @param views             perspective views (default 8)
- * @param missingTiles      what a missing tile means (default sea level)
+ * @param missingTiles      what a missing tile means (default {@link MissingTilePolicy#AUTO}: sea beside data, an
+ *                          error for no data at all or none under the viewpoint without an altitude)
  * @param lodErrorPx        bound on the screen error of simplified distant terrain, panorama pixels
  *                          (default {@link dempano.terrain.LevelOfDetail#DEFAULT_MAX_ERROR_PX}; 0 = full
  *                          resolution everywhere). The GL path only: the reference is always exact.
@@ -92,7 +93,7 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
                 DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
                 DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.SEA_LEVEL, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true);
+                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true);
     }
 
     public PanoramaRequest withOffsetMetres(double v) {

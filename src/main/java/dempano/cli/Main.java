@@ -95,7 +95,7 @@ public final class Main implements Callable<Integer> {
     boolean noColour;
     @Option(names = "--no-distance", description = "Colour only: skip the distance map (P-distance.*); its silhouette lines come from the nearest view samples. Not with --layers or --summits.")
     boolean noDistance;
-    @Option(names = "--missing-tiles", paramLabel = "sea|error", description = "A needed tile that is absent: sea (0 m, with a warning; default) or error.", defaultValue = "sea")
+    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent: auto (default: sea level, 0 m, with a warning for tiles beside the data, as at coasts; an error when no needed tile is present, or the viewpoint's own tile is missing and --altitude-m is not given), sea (every missing tile is sea level, with a warning) or error (fail, listing every missing tile).", defaultValue = "auto")
     String missingTiles;
 
     public static void main(String[] args) {
@@ -163,9 +163,10 @@ public final class Main implements Callable<Integer> {
             }
         }
         MissingTilePolicy policy = switch (missingTiles.toLowerCase(Locale.ROOT)) {
+            case "auto" -> MissingTilePolicy.AUTO;
             case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;
             case "error" -> MissingTilePolicy.ERROR;
-            default -> throw new IllegalArgumentException("--missing-tiles must be sea or error, got " + missingTiles);
+            default -> throw new IllegalArgumentException("--missing-tiles must be auto, sea or error, got " + missingTiles);
         };
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withOffsetMetres(offsetMetres)
                 .withAltitudeMetres(altitudeMetres == null ? Double.NaN : altitudeMetres)
@@ -180,6 +181,7 @@ public final class Main implements Callable<Integer> {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
         DemDirectory dem = new DemDirectory(dir);
+        dem.warnings().forEach(w -> System.err.println("  warning: " + w));
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;

@@ -3,7 +3,9 @@ package dempano.dem;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Collections;
+import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
@@ -14,13 +16,28 @@ import java.util.stream.Stream;
  * Tiles from one directory: files named like {@code N46E008.hgt}, {@code n46e008.hgt},
  * {@code N19W155v2.3a.hgt.zip}. The directory is indexed once; loaded tiles are kept in a small
  * least-recently-used cache so a pipeline rendering many nearby panoramas reads each file once.
+ *
+ * <p>Indexing never fails on the folder's content. Files named {@code *.hgt} / {@code *.hgt.zip}
+ * that are no valid tile name ({@code N99E999.hgt}, {@code foo.hgt}) are ignored with one
+ * {@link #warnings() warning}; other files (README, SHA256SUMS) silently. Problems of a tile are
+ * reported when the tile is needed ({@link #tile}), so tiles out of range cannot make a render
+ * fail: an entry named like the tile that is not a readable file (a directory, a dangling symbolic
+ * link, a link loop, no read permission), and several files for one tile ({@code N43E007.hgt} and
+ * {@code N43E007-v2.hgt}, {@code n43e007.hgt}, {@code N43E007.hgt.zip}), which is ambiguous: no file
+ * is preferred over another.
  */
 public final class DemDirectory implements DemSource {
     /** Tiles kept in memory by default: a 3×3 mosaic plus a ring around it. */
     public static final int DEFAULT_CACHED_TILES = 16;
 
+    /** A file (or other entry) named like a tile; problem is null for a readable regular file. */
+    private record Candidate(Path path, String problem) {
+    }
+
     private final Path directory;
+    private final Map<TileId, List<Candidate>> candidates;
     private final Map<TileId, Path> files;
+    private final List<String> warnings;
     private final Map<TileId, HgtTile> cache;
 
     public DemDirectory(Path directory) {
@@ -32,25 +49,34 @@ public final class DemDirectory implements DemSource {
             throw new DemException("DEM directory " + directory + " does not exist or is not a directory");
         }
         this.directory = directory;
-        Map<TileId, Path> index = new TreeMap<>();
+        Map<TileId, List<Candidate>> index = new TreeMap<>();
+        List<String> junk = new ArrayList<>();
         try (Stream<Path> list = Files.list(directory)) {
-            for (Path p : (Iterable<Path>) list::iterator) {
+            for (Path p : (Iterable<Path>) list.sorted()::iterator) {
                 String name = p.getFileName().toString();
-                if (!TileId.isTileFileName(name) || !Files.isRegularFile(p)) {
+                if (!TileId.looksLikeTileFile(name)) {
+                    continue; // README, SHA256SUMS, ...
+                }
+                if (!TileId.isTileFileName(name)) {
+                    junk.add(name);
                     continue;
                 }
-                TileId id = TileId.parseFileName(name);
-                Path other = index.get(id);
-                // Prefer a plain .hgt over a zip of the same tile; otherwise the first name in order.
-                if (other == null || (other.toString().endsWith(".zip") && !name.endsWith(".zip"))
-                        || (other.toString().endsWith(".zip") == name.endsWith(".zip") && p.compareTo(other) < 0)) {
-                    index.put(id, p);
-                }
+                index.computeIfAbsent(TileId.parseFileName(name), k -> new ArrayList<>()).add(new Candidate(p, problem(p)));
             }
-        } catch (IOException e) {
+        } catch (IOException | java.io.UncheckedIOException e) {
             throw new DemException("cannot list DEM directory " + directory + ": " + e, e);
         }
-        this.files = Collections.unmodifiableMap(index);
+        Map<TileId, Path> usable = new TreeMap<>();
+        index.forEach((id, c) -> {
+            if (c.size() == 1 && c.get(0).problem() == null) {
+                usable.put(id, c.get(0).path());
+            }
+        });
+        this.candidates = Collections.unmodifiableMap(index);
+        this.files = Collections.unmodifiableMap(usable);
+        this.warnings = junk.isEmpty() ? List.of() : List.of("ignored " + junk.size() + " file" + (junk.size() == 1 ? "" : "s")
+                + " in " + directory + " named like tiles but with no valid tile name " + junk
+                + " (expected e.g. N46E008.hgt, S16E166.hgt.zip, N19W155v2.3a.hgt.zip)");
         int capacity = Math.max(1, cachedTiles);
         this.cache = new LinkedHashMap<>(capacity * 2, 0.75f, true) {
             @Override
@@ -60,16 +86,69 @@ public final class DemDirectory implements DemSource {
         };
     }
 
-    /** The tiles this directory holds and their files. */
+    /** What is wrong with an entry named like a tile, or null for a readable regular file. */
+    private static String problem(Path p) {
+        if (Files.isRegularFile(p)) { // follows links
+            return Files.isReadable(p) ? null : "is not readable (permission denied)";
+        }
+        if (Files.isDirectory(p)) {
+            return Files.isSymbolicLink(p) ? "is a symbolic link to a directory, not a tile file" : "is a directory, not a tile file";
+        }
+        if (Files.isSymbolicLink(p)) {
+            String target;
+            try {
+                target = String.valueOf(Files.readSymbolicLink(p));
+            } catch (IOException e) {
+                target = "?";
+            }
+            try {
+                p.toRealPath();
+            } catch (java.nio.file.NoSuchFileException e) {
+                return "is a dangling symbolic link (to " + target + ", which does not exist)";
+            } catch (java.nio.file.FileSystemException e) {
+                String reason = String.valueOf(e.getReason());
+                return reason.toLowerCase(java.util.Locale.ROOT).contains("levels")
+                        ? "is a symbolic link loop (to " + target + ": " + reason + ")"
+                        : "is a symbolic link that cannot be followed (to " + target + ": " + reason + ")";
+            } catch (IOException e) {
+                return "is a symbolic link that cannot be followed (to " + target + ": " + e + ")";
+            }
+            return "is a symbolic link to something that is not a regular file (" + target + ")";
+        }
+        return Files.exists(p) ? "is not a regular file (a device, pipe or socket?)" : "cannot be accessed";
+    }
+
+    /** The tiles that have exactly one readable file, and their files. */
     public Map<TileId, Path> files() {
         return files;
     }
 
+    /**
+     * Problems found while indexing that do not stop rendering: files named like tiles whose names
+     * are not valid tile names (ignored). At most one message.
+     */
+    public List<String> warnings() {
+        return warnings;
+    }
+
     @Override
     public Optional<HgtTile> tile(TileId id) {
-        Path file = files.get(id);
-        if (file == null) {
+        List<Candidate> found = candidates.get(id);
+        if (found == null) {
             return Optional.empty();
+        }
+        if (found.size() > 1) {
+            StringBuilder names = new StringBuilder();
+            for (Candidate c : found) {
+                names.append(names.length() == 0 ? "" : ", ").append(c.path().getFileName())
+                        .append(c.problem() == null ? "" : " (" + c.problem().replaceFirst("^is ", "") + ")");
+            }
+            throw new DemException("tile " + id + " is ambiguous: " + directory + " holds " + found.size()
+                    + " files for it (" + names + "); keep one");
+        }
+        Path file = found.get(0).path();
+        if (found.get(0).problem() != null) {
+            throw new DemException("tile " + id + ": " + file + " " + found.get(0).problem());
         }
         synchronized (cache) {
             HgtTile cached = cache.get(id);

@@ -9,7 +9,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipException;
-import java.util.zip.ZipInputStream;
+import java.util.zip.ZipFile;
 
 /**
  * Reads SRTM {@code .hgt} tiles: big-endian int16 heights in metres, row 0 the northern edge,
@@ -35,18 +35,22 @@ public final class HgtReader {
         TileId id = TileId.parseFileName(fileName);
         byte[] bytes;
         try {
-            bytes = fileName.toLowerCase(java.util.Locale.ROOT).endsWith(".zip") ? unzip(file) : Files.readAllBytes(file);
+            bytes = fileName.toLowerCase(java.util.Locale.ROOT).endsWith(".zip") ? unzip(file, id) : Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             throw new DemException(file + ": no such file", e);
         } catch (ZipException e) {
-            throw new DemException(file + ": corrupt zip archive (" + e.getMessage() + ")", e);
+            throw new DemException(file + " is not a zip archive, or a corrupt one (" + e.getMessage() + ")", e);
         } catch (IOException e) {
             throw new DemException(file + ": cannot read (" + e + ")", e);
         }
         return decode(id, file.toString(), bytes);
     }
 
-    /** Decodes the raw bytes of a {@code .hgt} file for a known tile. */
+    /**
+     * Decodes the raw bytes of a {@code .hgt} file for a known tile, and runs the cheap plausibility
+     * checks (rows of zeros right below land, needles) whose findings become the tile's
+     * {@link HgtTile#warnings()}.
+     */
     public static HgtTile decode(TileId id, String source, byte[] bytes) {
         int n = samplesForLength(source, bytes.length);
         float[] heights = new float[n * n];
@@ -62,9 +66,18 @@ public final class HgtReader {
                 heights[i] = v;
             }
         }
+        java.util.List<String> warnings = new java.util.ArrayList<>(2);
+        String zeros = Plausibility.zeroRowsBelowLand(heights, n, source); // before filling: voids are NaN
+        if (zeros != null) {
+            warnings.add(zeros);
+        }
         java.util.BitSet mask = VoidFiller.voidMask(heights);
         VoidReport voids = VoidFiller.fill(heights, n);
-        return new HgtTile(id, source, n, heights, voids, mask);
+        String needles = Plausibility.needles(heights, n, id, source);
+        if (needles != null) {
+            warnings.add(needles);
+        }
+        return new HgtTile(id, source, n, heights, voids, mask, warnings);
     }
 
     private static int samplesForLength(String source, long length) {
@@ -79,27 +92,36 @@ public final class HgtReader {
                 + 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + " for SRTM1; truncated or not a .hgt?)");
     }
 
-    private static byte[] unzip(Path file) throws IOException {
-        byte[] found = null;
-        String foundName = null;
-        try (InputStream in = Files.newInputStream(file); ZipInputStream zip = new ZipInputStream(in)) {
-            ZipEntry e;
-            while ((e = zip.getNextEntry()) != null) {
+    /**
+     * The one {@code .hgt} entry of a zip, read through the central directory. An entry named like a
+     * tile must be the zip's own tile; other entry names (e.g. {@code data.hgt}) are accepted.
+     */
+    private static byte[] unzip(Path file, TileId id) throws IOException {
+        try (ZipFile zip = new ZipFile(file.toFile())) {
+            ZipEntry found = null;
+            for (java.util.Enumeration<? extends ZipEntry> en = zip.entries(); en.hasMoreElements(); ) {
+                ZipEntry e = en.nextElement();
                 String name = e.getName();
                 if (e.isDirectory() || !name.toLowerCase(java.util.Locale.ROOT).endsWith(".hgt")) {
                     continue;
                 }
                 if (found != null) {
-                    throw new DemException(file + ": zip holds more than one .hgt (" + foundName + ", " + name + ")");
+                    throw new DemException(file + ": zip holds more than one .hgt (" + found.getName() + ", " + name + ")");
                 }
+                found = e;
+            }
+            if (found == null) {
+                throw new DemException(file + ": zip holds no .hgt file");
+            }
+            String base = found.getName().substring(found.getName().lastIndexOf('/') + 1);
+            if (TileId.isTileFileName(base) && !TileId.parseFileName(base).equals(id)) {
+                throw new DemException(file + ": its name says tile " + id + " but the zip holds " + found.getName()
+                        + " (tile " + TileId.parseFileName(base) + "); rename the file or fetch the right tile");
+            }
+            try (InputStream in = zip.getInputStream(found)) {
                 // Cap the read so a lying archive cannot exhaust memory.
-                found = zip.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
-                foundName = name;
+                return in.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
             }
         }
-        if (found == null) {
-            throw new DemException(file + ": zip holds no .hgt file");
-        }
-        return found;
     }
 }

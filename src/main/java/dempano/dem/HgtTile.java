@@ -22,6 +22,7 @@ public final class HgtTile {
     private final float[] heightsMetres;
     private final VoidReport voids;
     private final java.util.BitSet filledVoids;
+    private final java.util.List<String> warnings;
 
     HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids) {
         this(id, source, samplesPerSide, heightsMetres, voids, new java.util.BitSet());
@@ -29,6 +30,12 @@ public final class HgtTile {
 
     HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids,
             java.util.BitSet filledVoids) {
+        this(id, source, samplesPerSide, heightsMetres, voids, filledVoids, java.util.List.of());
+    }
+
+    HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids,
+            java.util.BitSet filledVoids, java.util.List<String> warnings) {
+        this.warnings = java.util.List.copyOf(warnings);
         this.filledVoids = (java.util.BitSet) filledVoids.clone();
         this.id = Objects.requireNonNull(id);
         this.source = Objects.requireNonNull(source);
@@ -96,6 +103,14 @@ public final class HgtTile {
     /** What void filling found and did. */
     public VoidReport voids() {
         return voids;
+    }
+
+    /**
+     * What reading found implausible in the data (cheap checks: rows of zeros below land, needles,
+     * see {@link HgtReader#decode}); each names the file and the figures. Empty for synthetic tiles.
+     */
+    public java.util.List<String> warnings() {
+        return warnings;
     }
 
     /** True if the tile had no valid sample at all (then it holds sea level and is treated as missing). */

@@ -10,7 +10,7 @@ import java.util.Locale;
  * edge row/column, which appears once in the grid. Row 0 is the northern edge, column 0 the
  * western edge; the spacing is 1/{@link #intervalsPerDegree()} degree in both directions.
  * Samples of tiles the range circle does not touch are {@code NaN} (not loaded); missing tiles are
- * sea level (0 m) under {@link MissingTilePolicy#SEA_LEVEL}. Immutable.
+ * sea level (0 m) under {@link MissingTilePolicy#SEA_LEVEL} and {@link MissingTilePolicy#AUTO}. Immutable.
  *
  * <p>The grid is a view on the tiles, not a copy: each sample is read from the tile that holds it,
  * so a block of 7×9 SRTM1 tiles of which most are sea costs the memory of its present tiles only,
@@ -37,6 +37,7 @@ public final class Mosaic {
     private final List<TileId> tilesUsed;
     private final List<TileId> tilesMissing;
     private final List<String> warnings;
+    private final String sourceDescription;
 
     /** A sample whose height was interpolated over a void. */
     public static final int FLAG_FILLED_VOID = 1;
@@ -47,7 +48,7 @@ public final class Mosaic {
     private static final long NOT_LOADED = -1, SEA_LEVEL = -2;
 
     private Mosaic(TileSelection sel, int intervalsPerDegree, HgtTile[][] tiles, boolean[][] seaLevel, List<TileId> used,
-                   List<TileId> missing, List<String> warnings) {
+                   List<TileId> missing, List<String> warnings, String sourceDescription) {
         this.latSouthDeg = sel.latSouthDeg();
         this.lonWestDeg = sel.lonWestDeg();
         this.tilesNorthSouth = sel.tilesNorthSouth();
@@ -60,13 +61,17 @@ public final class Mosaic {
         this.tilesUsed = Collections.unmodifiableList(used);
         this.tilesMissing = Collections.unmodifiableList(missing);
         this.warnings = Collections.unmodifiableList(warnings);
+        this.sourceDescription = sourceDescription;
     }
 
     /**
      * Loads and stitches the tiles that the range circle around a viewpoint touches.
      *
      * @param rangeMetres range of sight, metres
-     * @throws DemException if a tile is unreadable, or missing under {@link MissingTilePolicy#ERROR}
+     * @throws DemException if a needed tile is unreadable or ambiguous, or tiles are missing under
+     *                      {@link MissingTilePolicy#ERROR} (all of them listed). The checks of
+     *                      {@link MissingTilePolicy#AUTO} that need the viewpoint's altitude are
+     *                      {@link MissingTilePolicy#checkData}'s.
      * @throws IllegalArgumentException for coordinates off the globe or a bad range
      */
     public static Mosaic around(DemSource source, double latDeg, double lonDeg, double rangeMetres,
@@ -94,10 +99,6 @@ public final class Mosaic {
                     t = null;
                 }
                 if (t == null) {
-                    if (policy == MissingTilePolicy.ERROR) {
-                        throw new DemException("tile " + id + " is needed for the range of sight but "
-                                + source.describe() + " has no usable file for it");
-                    }
                     missing.add(id);
                     seaLevel[r][c] = true;
                     continue;
@@ -110,11 +111,18 @@ public final class Mosaic {
                             id, v.voidCells(), 100.0 * v.voidCells() / (t.samplesPerSide() * (double) t.samplesPerSide()),
                             v.largestRegionCells(), v.largestRegionSpanSamples()));
                 }
+                warnings.addAll(t.warnings());
                 tiles[r][c] = t;
                 used.add(id);
                 ipd = Math.max(ipd, t.intervalsPerDegree());
             }
         }
+        if (!missing.isEmpty() && policy == MissingTilePolicy.ERROR) {
+            throw new DemException((missing.size() == 1 ? "tile " + missing.get(0) + " is" : missing.size() + " tiles "
+                    + missing + " are") + " needed for the range of sight but " + source.describe()
+                    + " has no usable file for " + (missing.size() == 1 ? "it" : "them") + " (--missing-tiles error)");
+        }
+        warnings.addAll(Plausibility.edgeMismatches(tiles));
         if (!missing.isEmpty()) {
             warnings.add("no data for " + missing + " in " + source.describe() + ": treated as sea level (0 m)");
         }
@@ -126,7 +134,7 @@ public final class Mosaic {
             throw new IllegalArgumentException("a mosaic of " + sel.tilesNorthSouth() + "×" + sel.tilesEastWest()
                     + " tiles at " + ipd + " samples per degree is too large; reduce the range");
         }
-        return new Mosaic(sel, ipd, tiles, seaLevel, used, missing, warnings);
+        return new Mosaic(sel, ipd, tiles, seaLevel, used, missing, warnings, source.describe());
     }
 
     /**
@@ -292,7 +300,12 @@ public final class Mosaic {
         return tilesMissing;
     }
 
-    /** Warnings for the user: missing tiles, large void regions. */
+    /** The DEM source's description (e.g. its folder), for messages. */
+    public String sourceDescription() {
+        return sourceDescription;
+    }
+
+    /** Warnings for the user: missing tiles, large void regions, implausible tiles, disagreeing edges. */
     public List<String> warnings() {
         return warnings;
     }

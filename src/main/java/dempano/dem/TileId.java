@@ -60,9 +60,23 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
         return new TileId(south ? -lat : lat, west ? -lon : lon);
     }
 
-    /** True if a file name parses as a tile name. */
+    /** True if a file name parses as a tile name (of a tile on the globe: not {@code N99E999.hgt}). */
     public static boolean isTileFileName(String fileName) {
-        return FILE_NAME.matcher(fileName).matches();
+        if (!FILE_NAME.matcher(fileName).matches()) {
+            return false;
+        }
+        try {
+            parseFileName(fileName);
+            return true;
+        } catch (DemException e) {
+            return false;
+        }
+    }
+
+    /** True if a file name ends in {@code .hgt} or {@code .hgt.zip}, any case: meant as a tile, valid or not. */
+    public static boolean looksLikeTileFile(String fileName) {
+        String lower = fileName.toLowerCase(Locale.ROOT);
+        return lower.endsWith(".hgt") || lower.endsWith(".hgt.zip");
     }
 
     /** The canonical name, e.g. {@code N46E008}, {@code S16E166}, {@code N00W001}. */
