@@ -21,7 +21,9 @@ import java.util.Set;
  * @param altitudeMetres    absolute standing altitude, metres above sea level; NaN (default) = from the DEM
  * @param eyeHeightMetres   eye above the standing altitude (default 2 m)
  * @param rangeMetres       range of sight (default 100 km)
- * @param pixelsPerDegree   panorama resolution (default 20)
+ * @param pixelsPerDegree   panorama resolution, pixels per degree in (0, 200] with 360·ppd a whole number
+ *                          (default 20); normalized as {@link dempano.panorama.PanoramaGeometry#checkedPixelsPerDegree},
+ *                          so the request and the panorama's geometry hold the same value
  * @param elevationRange    elevation angles covered (default -30°:30°)
  * @param refraction        refraction coefficient (default k = 0.13)
  * @param depthMode         how distances are obtained (default {@link DepthMode#SHADER_RANGE})
@@ -53,6 +55,7 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
 
     public PanoramaRequest {
         TileSelection.checkCoordinates(latDeg, lonDeg);
+        pixelsPerDegree = dempano.panorama.PanoramaGeometry.checkedPixelsPerDegree(pixelsPerDegree);
         if (!Double.isFinite(offsetMetres)) {
             throw new IllegalArgumentException("offset must be a finite number of metres, got " + offsetMetres);
         }

@@ -70,6 +70,7 @@ public final class FlyCommand implements Callable<Integer> {
                     + "window at least 64×64");
         }
         new Refraction(refraction); // validates
+        OnscreenRenderer.checkDisplay(); // before the demo DEM is written or jME started
         Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         return OnscreenRenderer.fly(new OnscreenRenderer.Options(dir, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,

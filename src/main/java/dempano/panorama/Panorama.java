@@ -11,6 +11,14 @@ import java.util.Objects;
  * grid ({@link PanoramaGeometry}). Row-major arrays, row 0 at the top. Distances are straight-line
  * metres from the eye to the terrain point seen, +∞ for sky. Immutable; accessors return copies
  * only where noted.
+ *
+ * <p>Domains. Pixel accessors ({@link #distanceMetres(int, int)}, {@link #argb(int, int)}) take a
+ * column in [0, {@link #widthPx()}) and a row in [0, {@link #heightPx()}) and throw
+ * {@link IndexOutOfBoundsException} naming the value and the range otherwise. Direction lookups
+ * ({@link #distanceAt(double, double)}) take any finite azimuth, wrapped modulo 360°, and return NaN
+ * for a NaN or infinite argument or an elevation outside the rendered rows (bottom, top]. The angle conversions
+ * {@link #azimuthOfColumn(int)} and {@link #elevationOfRow(int)} are plain arithmetic on the grid:
+ * outside the image they extrapolate (no wrapping, no exception).
  */
 public final class Panorama {
     private final PanoramaGeometry geometry;
@@ -57,19 +65,41 @@ public final class Panorama {
         return metadata;
     }
 
-    /** Azimuth of a column's centre, degrees clockwise from true north. */
+    /**
+     * Azimuth of a column's centre, degrees clockwise from true north: (column + 0.5)/ppd, in
+     * [0, 360) for columns of the image; other columns extrapolate linearly (not wrapped).
+     */
     public double azimuthOfColumn(int column) {
         return geometry.azimuthOfColumn(column);
     }
 
-    /** Elevation angle of a row's centre above the eye's horizontal, degrees. */
+    /**
+     * Elevation angle of a row's centre above the eye's horizontal, degrees: top − (row + 0.5)/ppd;
+     * rows outside the image extrapolate linearly (−1 is the row that would lie above row 0).
+     */
     public double elevationOfRow(int row) {
         return geometry.elevationOfRow(row);
     }
 
-    /** Distance in metres of the pixel at (column, row); +∞ for sky. Throws if distances were not rendered. */
+    /**
+     * Distance in metres of the pixel at (column, row); +∞ for sky.
+     *
+     * @throws IndexOutOfBoundsException column not in [0, width) or row not in [0, height), naming the value
+     * @throws IllegalStateException     distances were not rendered
+     */
     public float distanceMetres(int column, int row) {
-        return distances()[row * widthPx() + column];
+        return distances()[index(column, row)];
+    }
+
+    /** The array index of a pixel, after checking both coordinates. */
+    private int index(int column, int row) {
+        if (column < 0 || column >= widthPx()) {
+            throw new IndexOutOfBoundsException("column " + column + " outside the panorama's columns 0…" + (widthPx() - 1));
+        }
+        if (row < 0 || row >= heightPx()) {
+            throw new IndexOutOfBoundsException("row " + row + " outside the panorama's rows 0…" + (heightPx() - 1));
+        }
+        return row * widthPx() + column;
     }
 
     /** Whether the distance map was rendered (see {@code PanoramaRequest.withDistance}). */
@@ -85,16 +115,29 @@ public final class Panorama {
     }
 
     /**
-     * Distance in metres seen in a direction (the pixel containing it); +∞ for sky, NaN outside the
-     * panorama's elevation range. Throws if distances were not rendered.
+     * Distance in metres seen in a direction: the value of the pixel containing it (column c covers
+     * azimuths [c/ppd, (c+1)/ppd), row r elevations (top − (r+1)/ppd, top − r/ppd]).
+     *
+     * @param azimuthDeg   degrees clockwise from true north; any finite value, wrapped modulo 360
+     *                     (−90 and 270 are the same direction)
+     * @param elevationDeg degrees above the eye's horizontal
+     * @return metres; +∞ for sky; NaN when either argument is NaN or infinite, or the elevation lies
+     *         outside the rendered rows, which cover ({@link PanoramaGeometry#bottomElevationDeg() bottom},
+     *         {@link PanoramaGeometry#topElevationDeg() top}] (the top edge belongs to row 0, the bottom
+     *         edge to no row)
+     * @throws IllegalStateException distances were not rendered
      */
     public double distanceAt(double azimuthDeg, double elevationDeg) {
         float[] d = distances();
-        int col = (int) Math.floor(geometry.columnOf(azimuthDeg)) % widthPx();
+        if (!Double.isFinite(azimuthDeg) || !Double.isFinite(elevationDeg)) {
+            return Double.NaN;
+        }
         double row = geometry.rowOf(elevationDeg);
         if (!(row >= 0 && row < heightPx())) {
             return Double.NaN;
         }
+        // columnOf wraps into [0, 360); a value a rounding step below 0 can come back as 360·ppd itself.
+        int col = Math.floorMod((int) Math.floor(geometry.columnOf(azimuthDeg)), widthPx());
         return d[(int) row * widthPx() + col];
     }
 
@@ -103,9 +146,14 @@ public final class Panorama {
         return argb != null;
     }
 
-    /** Colour of a pixel, 0xAARRGGBB; throws if colour was not rendered. */
+    /**
+     * Colour of a pixel, 0xAARRGGBB.
+     *
+     * @throws IndexOutOfBoundsException column not in [0, width) or row not in [0, height), naming the value
+     * @throws IllegalStateException     colour was not rendered
+     */
     public int argb(int column, int row) {
-        return colour()[row * widthPx() + column];
+        return colour()[index(column, row)];
     }
 
     private int[] colour() {

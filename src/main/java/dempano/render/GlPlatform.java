@@ -11,8 +11,12 @@ import static org.lwjgl.glfw.GLFW.glfwWindowHint;
 import com.jme3.system.AppSettings;
 import com.jme3.system.lwjgl.LwjglWindow;
 import java.lang.reflect.Field;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 
 /**
  * Chooses how GLFW gets an OpenGL context. {@code headless} (the default): GLFW's null platform with
@@ -24,6 +28,8 @@ final class GlPlatform {
     /** The jME renderer name we ask for: OpenGL 4.5 core (clip control is core in 4.5). */
     static final String RENDERER = AppSettings.LWJGL_OPENGL45;
     private static boolean configured;
+    /** Loggers whose level we set, kept reachable: java.util.logging holds loggers weakly and a collected one forgets its level. */
+    private static final List<Logger> QUIETED = new ArrayList<>();
 
     private GlPlatform() {
     }
@@ -56,19 +62,77 @@ final class GlPlatform {
     }
 
     /**
-     * For a visible window (the fly-through): X11 when {@code DEMPANO_GL=x11}, otherwise whatever GLFW
-     * finds (never the null platform, which has no screen).
+     * jME's own log lines (start-up banner, warnings) are not for users: only SEVERE ones are kept, and
+     * for the window none (its failures reach the caller through {@code handleError}, which words
+     * them). {@code DEMPANO_DEBUG} set in the environment keeps them all.
+     */
+    static synchronized void quietJme(boolean window) {
+        if (System.getenv("DEMPANO_DEBUG") != null) {
+            return;
+        }
+        Logger jme = Logger.getLogger("com.jme3");
+        jme.setLevel(Level.SEVERE);
+        QUIETED.add(jme);
+        if (window) {
+            Logger w = Logger.getLogger(LwjglWindow.class.getName());
+            w.setLevel(Level.OFF);
+            QUIETED.add(w);
+        }
+    }
+
+    /**
+     * Why no window can be opened here, or null when one may be: on Linux and the BSDs a window needs
+     * an X display ({@code $DISPLAY}) or, unless {@code DEMPANO_GL=x11}, a Wayland one
+     * ({@code $WAYLAND_DISPLAY}, with {@code $XDG_RUNTIME_DIR} unless it is a path). Elsewhere (Windows, macOS) the desktop is assumed.
+     *
+     * @param choice the {@code DEMPANO_GL} choice ({@link #choice()})
+     * @param env    the environment ({@code System.getenv()})
+     * @param osName {@code os.name}
+     */
+    static String displayProblem(String choice, Map<String, String> env, String osName) {
+        String os = osName.toLowerCase(Locale.ROOT);
+        if (!(os.contains("linux") || os.contains("bsd") || os.contains("sunos"))) {
+            return null;
+        }
+        boolean x11 = !blank(env.get("DISPLAY")), wayland = !blank(env.get("WAYLAND_DISPLAY"));
+        if (choice.equals("x11") || choice.equals("glx")) {
+            return x11 ? null : "$DISPLAY is not set (DEMPANO_GL=" + choice + " uses X only)";
+        }
+        if (!x11 && wayland && !env.get("WAYLAND_DISPLAY").startsWith("/") && blank(env.get("XDG_RUNTIME_DIR"))) {
+            return "$WAYLAND_DISPLAY is set but $XDG_RUNTIME_DIR, where its socket lives, is not";
+        }
+        return x11 || wayland ? null : "no display is set ($DISPLAY and $WAYLAND_DISPLAY are empty)";
+    }
+
+    private static boolean blank(String s) {
+        return s == null || s.isBlank();
+    }
+
+    /** How to fly without a screen, for messages. */
+    static final String XVFB_WAY_OUT = "without a screen, run it under Xvfb: DEMPANO_GL=x11 xvfb-run -a dempano fly ..."
+            + " (apt-get install xvfb xauth)";
+
+    /**
+     * For a visible window (the fly-through): X11 when {@code DEMPANO_GL=x11}, or when only
+     * {@code $DISPLAY} is set (so GLFW does not probe Wayland, whose library prints to the terminal);
+     * otherwise whatever GLFW finds (never the null platform, which has no screen). Check
+     * {@link #displayProblem} first.
      */
     static synchronized void configureWindow() {
         String choice = choice();
-        glfwInitHint(GLFW_PLATFORM, choice.equals("x11") || choice.equals("glx") ? GLFW_PLATFORM_X11
+        Map<String, String> env = System.getenv();
+        boolean onlyX11 = !blank(env.get("DISPLAY")) && blank(env.get("WAYLAND_DISPLAY"))
+                && !System.getProperty("os.name", "").toLowerCase(Locale.ROOT).contains("mac");
+        glfwInitHint(GLFW_PLATFORM, choice.equals("x11") || choice.equals("glx") || onlyX11 ? GLFW_PLATFORM_X11
                 : org.lwjgl.glfw.GLFW.GLFW_ANY_PLATFORM);
     }
 
-    /** What to tell a user whose window failed. */
+    /** What to tell a user whose window failed to open although a display was set. */
     static String windowHint() {
-        return "the fly-through needs a display: $DISPLAY is " + System.getenv("DISPLAY")
-                + "; without a screen run it under 'xvfb-run -a' with DEMPANO_GL=x11 (apt-get install xvfb xauth)";
+        String display = System.getenv("DISPLAY"), wayland = System.getenv("WAYLAND_DISPLAY");
+        return "check that the display (" + (blank(display) ? "" : "$DISPLAY " + display)
+                + (blank(display) || blank(wayland) ? "" : ", ") + (blank(wayland) ? "" : "$WAYLAND_DISPLAY " + wayland)
+                + ") is reachable and has OpenGL 4.5; " + XVFB_WAY_OUT;
     }
 
     @SuppressWarnings("unchecked")

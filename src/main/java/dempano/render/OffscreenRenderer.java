@@ -113,9 +113,7 @@ public final class OffscreenRenderer {
     }
 
     private static OffscreenRenderer open() {
-        if (System.getenv("DEMPANO_DEBUG") == null) {
-            Logger.getLogger("com.jme3").setLevel(Level.SEVERE);
-        }
+        GlPlatform.quietJme(false);
         GlPlatform.configure();
         GlApp app = new GlApp();
         AppSettings s = new AppSettings(true);

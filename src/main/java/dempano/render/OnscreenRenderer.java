@@ -94,8 +94,25 @@ public final class OnscreenRenderer extends SimpleApplication {
         this.refractionK = opt.refractionCoefficient();
     }
 
+    /**
+     * Fails fast, before any DEM is read or jME started, where no window can open: on Linux and the
+     * BSDs neither {@code $DISPLAY} nor {@code $WAYLAND_DISPLAY} is set (only {@code $DISPLAY} counts
+     * under {@code DEMPANO_GL=x11}).
+     *
+     * @throws GlUnavailableException naming the missing display and how to run under Xvfb
+     */
+    public static void checkDisplay() {
+        String problem = GlPlatform.displayProblem(GlPlatform.choice(), System.getenv(), System.getProperty("os.name", ""));
+        if (problem != null) {
+            throw new GlUnavailableException("fly needs a display for its window, and " + problem + "; "
+                    + GlPlatform.XVFB_WAY_OUT, null);
+        }
+    }
+
     /** Runs the window until it is closed (or the script ends); returns 0, or throws what went wrong. */
     public static int fly(Options opt) {
+        checkDisplay();
+        GlPlatform.quietJme(true);
         GlPlatform.configureWindow();
         OnscreenRenderer app = new OnscreenRenderer(opt);
         AppSettings s = new AppSettings(true);
@@ -117,16 +134,34 @@ public final class OnscreenRenderer extends SimpleApplication {
             app.stop();
         }
         Throwable t = app.failure.get();
+        if (t instanceof RuntimeException e && !(t instanceof JmeFailure)) {
+            throw e; // from our own start-up (the DEM): already worded for the user
+        }
         if (t != null) {
-            throw new GlUnavailableException("the fly-through failed: " + t.getMessage() + "; " + GlPlatform.windowHint(), t);
+            throw new GlUnavailableException(app.windowOpened
+                    ? "the fly-through stopped: " + t.getMessage()
+                    : "fly could not open its window: " + t.getMessage() + "; " + GlPlatform.windowHint(), t.getCause());
         }
         return 0;
     }
 
+    /** A failure jME reported through {@link #handleError}; its message is jME's or GLFW's words, once. */
+    private static final class JmeFailure extends RuntimeException {
+        JmeFailure(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
+    /** Set once jME has a window and calls {@link #simpleInitApp()}. */
+    private volatile boolean windowOpened;
+
     @Override
     public void handleError(String errMsg, Throwable t) {
-        // jME would log and exit 0; make the failure reach the caller.
-        failure.compareAndSet(null, new IllegalStateException(errMsg + (t != null ? ": " + t : ""), t));
+        // jME would log and exit 0; make the failure reach the caller. GLFW's errors arrive as the
+        // description plus an Exception carrying the same text: say it once.
+        String cause = t == null || t.getMessage() == null || (errMsg != null && errMsg.contains(t.getMessage())) ? errMsg
+                : errMsg == null || t.getMessage().contains(errMsg) ? t.getMessage() : errMsg + ": " + t.getMessage();
+        failure.compareAndSet(null, new JmeFailure(cause == null ? String.valueOf(t) : cause, t));
         stop();
         done.countDown();
     }
@@ -142,6 +177,7 @@ public final class OnscreenRenderer extends SimpleApplication {
 
     @Override
     public void simpleInitApp() {
+        windowOpened = true;
         try {
             DemDirectory dem = new DemDirectory(opt.demDir());
             mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.SEA_LEVEL);

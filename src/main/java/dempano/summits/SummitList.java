@@ -3,11 +3,12 @@ package dempano.summits;
 import java.util.List;
 
 /**
- * An immutable list of summits read from one source, with the lines skipped in lenient reading.
+ * An immutable list of summits read from one source, with the entries skipped in lenient reading.
  *
  * @param source   where the list came from (a file name)
  * @param summits  the summits, in file order
- * @param skipped  one message per skipped line ("line N: problem"); empty in strict reading
+ * @param skipped  one message per skipped entry ("line N: problem", or "feature N: problem" for
+ *                 GeoJSON); empty in strict reading
  */
 public record SummitList(String source, List<Summit> summits, List<String> skipped) {
     public SummitList {
@@ -21,5 +22,18 @@ public record SummitList(String source, List<Summit> summits, List<String> skipp
 
     public int size() {
         return summits.size();
+    }
+
+    /**
+     * What a user should be told about the list beyond the skipped entries, one sentence each without
+     * a "warning:" prefix: today only an empty list ("no summits in FILE", with how many entries were
+     * skipped when all were). Empty when there is nothing to say.
+     */
+    public List<String> warnings() {
+        if (!summits.isEmpty()) {
+            return List.of();
+        }
+        return List.of("no summits in " + source + (skipped.isEmpty() ? ""
+                : " (all " + skipped.size() + " entries were skipped as bad)"));
     }
 }
