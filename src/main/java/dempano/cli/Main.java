@@ -30,7 +30,7 @@ import picocli.CommandLine.Option;
         description = {"Renders the 360° landscape panorama seen from a point, and a distance map, from SRTM .hgt tiles.",
                 "With no --lat/--lon/--dem-dir it renders the built-in demo scene (generated into testdata/demo-dem)."},
         footer = {"", "Writes P.png, P-distance.npy (or .pfm), P-distance.png, P-<layer>.npy and P.json for --out P.",
-                "Exit codes: 0 done, 1 rendering or input failure, 2 bad arguments."})
+                "Exit codes: 0 done, 1 input or rendering failure (tiles, DEM data, output folder, summit list, memory, OpenGL), 2 bad arguments."})
 public final class Main implements Callable<Integer> {
     @Option(names = "--lat", description = "Viewpoint latitude, degrees north (-90..90). Default: the demo scene's.")
     Double latDeg;
@@ -204,6 +204,9 @@ public final class Main implements Callable<Integer> {
             }
             for (String skipped : summitList.skipped()) {
                 System.err.println("  summit list " + summitsFile + ": skipped " + skipped);
+            }
+            for (String warning : summitList.warnings()) {
+                System.err.println("  warning: " + warning);
             }
         }
         if (repeat < 1 || repeat > 1000) {
