@@ -68,7 +68,7 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
             return;
         }
         throw new InsufficientMemoryException(String.format(Locale.ROOT,
-                "this panorama needs about %.1f GB of Java heap (%s) but the limit is %.1f GB: lower the pixels per "
+                "this panorama needs about %.2f GB of Java heap (%s) but the limit is %.2f GB: lower the pixels per "
                         + "degree (--ppd; half the ppd needs a quarter) or the elevation range (--elevation-range), or "
                         + "give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg",
                 need / 1e9, breakdown(), maxHeapBytes / 1e9, (int) Math.ceil(need / (double) (1L << 30)) + 1), this);

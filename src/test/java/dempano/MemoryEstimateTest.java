@@ -44,9 +44,9 @@ class MemoryEstimateTest {
     void aRequestBeyondTheHeapIsRefusedWithTheFiguresAndTheWayOut() {
         MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(60).withRangeMetres(30_000), true, 0);
         InsufficientMemoryException x = assertThrows(InsufficientMemoryException.class, () -> e.check(400L << 20));
-        assertTrue(x.getMessage().startsWith(String.format(java.util.Locale.ROOT, "this panorama needs about %.1f GB of Java heap",
+        assertTrue(x.getMessage().startsWith(String.format(java.util.Locale.ROOT, "this panorama needs about %.2f GB of Java heap",
                 e.heapBytes() / 1e9)), x.getMessage());
-        assertTrue(x.getMessage().contains("but the limit is 0.4 GB") && x.getMessage().contains("--ppd")
+        assertTrue(x.getMessage().contains("but the limit is 0.42 GB") && x.getMessage().contains("--ppd")
                 && x.getMessage().contains("DEMPANO_OPTS=-Xmx"), x.getMessage());
         e.check(e.heapBytes()); // exactly enough: accepted
     }

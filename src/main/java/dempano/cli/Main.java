@@ -104,6 +104,16 @@ public final class Main implements Callable<Integer> {
 
     /** Runs the CLI and returns the exit code (for tests). */
     public static int run(String... args) {
+        try {
+            return commandLine().execute(args);
+        } catch (OutOfMemoryError e) {
+            // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
+            System.err.println("dempano: " + outOfMemoryMessage(e));
+            return 1;
+        }
+    }
+
+    private static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new Main());
         cl.addSubcommand("fly", new FlyCommand());
         cl.setParameterExceptionHandler((ex, a) -> {
@@ -128,13 +138,7 @@ public final class Main implements Callable<Integer> {
             ex.printStackTrace(err);
             return 1;
         });
-        try {
-            return cl.execute(args);
-        } catch (OutOfMemoryError e) {
-            // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
-            cl.getErr().println("dempano: " + outOfMemoryMessage(e));
-            return 1;
-        }
+        return cl;
     }
 
     /** The way out of an out-of-memory failure, with the heap size in use. */
