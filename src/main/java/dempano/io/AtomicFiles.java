@@ -29,7 +29,7 @@ public final class AtomicFiles {
      *
      * @throws IOException with a message naming the file when its directory is missing or unwritable
      */
-    public static void checkWritable(Path target) throws IOException {
+    static void checkWritable(Path target) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
         if (dir == null || !Files.exists(dir)) {
             throw new IOException("cannot write " + target + ": folder " + dir + " does not exist");

@@ -5,12 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dempano.SharedData;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.PrintStream;
 import java.nio.ByteBuffer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -31,23 +28,6 @@ import org.junit.jupiter.params.provider.MethodSource;
 class DemInputCliTest {
     @TempDir
     Path tmp;
-
-    /** Runs the CLI capturing stderr+stdout (as MainTest.run). */
-    static String[] run(String... args) {
-        PrintStream oldErr = System.err, oldOut = System.out;
-        ByteArrayOutputStream buf = new ByteArrayOutputStream();
-        PrintStream ps = new PrintStream(buf, true, StandardCharsets.UTF_8);
-        System.setErr(ps);
-        System.setOut(ps);
-        int code;
-        try {
-            code = Main.run(args);
-        } finally {
-            System.setErr(oldErr);
-            System.setOut(oldOut);
-        }
-        return new String[] {Integer.toString(code), buf.toString(StandardCharsets.UTF_8)};
-    }
 
     /** An SRTM3 tile of smooth hills (400–1000 m), named e.g. N43E006.hgt (name may carry a suffix). */
     static Path tile(Path dir, String name) throws IOException {
@@ -143,7 +123,7 @@ class DemInputCliTest {
             argv.addAll(List.of("--range-km", "20"));
         }
         argv.addAll(List.of("--ppd", "2", "--renderer", "reference", "--out", out.resolve("p").toString()));
-        String[] r = run(argv.toArray(String[]::new));
+        String[] r = MainTest.run(argv.toArray(String[]::new));
         assertEquals(Integer.toString(exit), r[0], r[1]);
         for (String e : expected) {
             String s = e.replace("{dem}", dem.toString()).replace("{shared}", shared);
