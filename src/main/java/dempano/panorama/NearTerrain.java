@@ -9,8 +9,8 @@ import java.util.Optional;
  * rounds off), where a slope a few metres from the eye walls off the distant landscape.
  *
  * @param nearMetres            what counts as near: terrain closer than this, metres
- * @param blockedColumnShare    share of the panorama's columns (azimuths) in which near terrain reaches
- *                              the horizontal or above, [0, 1]
+ * @param blockedColumnShare    share of the panorama's columns (azimuths) in which near terrain rises
+ *                              {@link #WALL_ELEVATION_DEG} or more above the horizontal, [0, 1]
  * @param blockedPixelShare     share of the pixels at or above the horizontal (row centre elevation
  *                              ≥ 0°) that show near terrain, [0, 1]
  * @param nearestMetres         distance of the nearest terrain pixel at or above the horizontal, metres
@@ -26,9 +26,15 @@ public record NearTerrain(double nearMetres, double blockedColumnShare, double b
     /** Terrain nearer than this is "near", metres. */
     public static final double DEFAULT_NEAR_METRES = 50;
     /**
-     * Warn when near terrain reaches the horizontal in at least this share of the azimuths. Measured:
-     * 0 on ordinary summits and valleys; 0.35 at the Dammastock's surveyed position, 45 m beside the
-     * DEM's summit.
+     * A column is blocked where near terrain rises this far above the horizontal, degrees: a gentle
+     * slope a few tens of metres away (the demo scene's viewpoint has one at +1°) hides a sliver of the
+     * horizon, a wall beside the eye (+20° at the Dammastock) hides the landscape behind it.
+     */
+    public static final double WALL_ELEVATION_DEG = 3;
+    /**
+     * Warn when near terrain blocks at least this share of the azimuths. Measured: 0 at the demo scene's
+     * viewpoint, Mt Washington's summit and Nice; 0.35 at the Dammastock's surveyed position beside the
+     * DEM's summit, 0 once snapped onto it.
      */
     public static final double WARN_BLOCKED_COLUMN_SHARE = 0.10;
 
@@ -54,7 +60,7 @@ public record NearTerrain(double nearMetres, double blockedColumnShare, double b
                 nearest = Math.min(nearest, d);
                 if (d < nearMetres) {
                     nearPixels++;
-                    blocked[c] = true;
+                    blocked[c] |= el >= WALL_ELEVATION_DEG;
                     if (!(el <= highestEl)) {
                         highestEl = el;
                         highestUp = d * Math.sin(Math.toRadians(el));
@@ -97,13 +103,13 @@ public record NearTerrain(double nearMetres, double blockedColumnShare, double b
             return Optional.empty();
         }
         return Optional.of(String.format(Locale.ROOT,
-                "terrain nearer than %.0f m reaches the horizontal or above in %.0f %% of the azimuths (longest run"
-                        + " %.0f°–%.0f°) and fills %.1f %% of the view above the horizontal: the nearest is %.1f m"
+                "terrain nearer than %.0f m rises %.0f° or more above the horizontal in %.0f %% of the azimuths"
+                        + " (longest run %.0f°–%.0f°) and fills %.1f %% of the view above the horizontal: the nearest is %.1f m"
                         + " from the eye, rising to %+.1f° (%.1f m above the eye). The viewpoint is probably beside"
                         + " the DEM's own summit or ridge: --snap-to-summit-m R moves it to the highest DEM point"
                         + " within R metres, --clear-view-m R raises the eye above the terrain within R metres,"
                         + " --offset-m raises it by hand",
-                nearMetres, 100 * blockedColumnShare, spanFromAzimuthDeg, spanToAzimuthDeg, 100 * blockedPixelShare,
+                nearMetres, WALL_ELEVATION_DEG, 100 * blockedColumnShare, spanFromAzimuthDeg, spanToAzimuthDeg, 100 * blockedPixelShare,
                 nearestMetres, highestElevationDeg, highestAboveEyeMetres));
     }
 }
