@@ -4,9 +4,12 @@ import com.jme3.material.Material;
 import dempano.dem.DemSource;
 import dempano.dem.Mosaic;
 import dempano.geo.Viewpoint;
+import dempano.geo.ViewpointAdjustment;
+import dempano.geo.ViewpointMove;
 import dempano.panorama.DepthMode;
 import dempano.panorama.ElevationRange;
 import dempano.panorama.LayerComputer;
+import dempano.panorama.NearTerrain;
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.PanoramaMetadata;
@@ -103,11 +106,14 @@ public final class PanoramaRenderer implements AutoCloseable {
         MemoryEstimate.of(req, gl != null, 2 * samplesPerTile * mosaic.tilesUsed().size())
                 .check(Runtime.getRuntime().maxMemory());
 
-        Viewpoint eye = Double.isNaN(req.altitudeMetres())
+        Viewpoint requested = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
+        ViewpointAdjustment.Adjusted adjusted = ViewpointAdjustment.apply(mosaic, requested, req.snapToSummitMetres(),
+                req.clearViewMetres(), req.refraction());
+        Viewpoint eye = adjusted.eye();
         if (gl == null) {
-            return renderReference(req, mosaic, eye, timings, t, progress);
+            return renderReference(req, mosaic, eye, adjusted.move(), timings, t, progress);
         }
         progress.accept("building terrain mesh");
         Material material = gl.newTerrainMaterial(req.rangeMetres());
@@ -171,12 +177,12 @@ public final class PanoramaRenderer implements AutoCloseable {
             Stitcher.stitchColour(geometry, layout, captures, argb, distance);
         }
         t = lap(timings, "stitch", t);
-        return finish(req, mosaic, eye, geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
+        return finish(req, mosaic, eye, adjusted.move(), geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
                 layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,
                 req.lodErrorPx(), triangles);
     }
 
-    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, Map<String, Double> timings,
+    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ViewpointMove move, Map<String, Double> timings,
                                      long t, Consumer<String> progress) {
         ElevationRange er = req.elevationRange();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
@@ -184,11 +190,11 @@ public final class PanoramaRenderer implements AutoCloseable {
         var result = dempano.reference.ReferenceRenderer.render(mosaic, eye, req.refraction(), req.rangeMetres(),
                 geometry, req.colour());
         t = lap(timings, "render", t);
-        return finish(req, mosaic, eye, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
+        return finish(req, mosaic, eye, move, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
                 req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0);
     }
 
-    private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, PanoramaGeometry geometry, int[] argb,
+    private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ViewpointMove move, PanoramaGeometry geometry, int[] argb,
                             float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
                             int views, int viewWidth, int viewHeight, double far, double near, double lodErrorPx,
                             long triangles) {
@@ -213,10 +219,15 @@ public final class PanoramaRenderer implements AutoCloseable {
         List<String> used = new ArrayList<>(), missing = new ArrayList<>();
         mosaic.tilesUsed().forEach(id -> used.add(id.name()));
         mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
+        List<String> warnings = new ArrayList<>(mosaic.warnings());
+        if (req.distance()) {
+            // A wall beside the eye (a viewpoint next to the DEM's own summit): say so, with the options that fix it.
+            NearTerrain.measure(geometry, distance, NearTerrain.DEFAULT_NEAR_METRES).warning().ifPresent(warnings::add);
+        }
         PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
                 req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), near, far, views,
-                viewWidth, viewHeight, used, missing, mosaic.warnings(), timings, glRenderer(), lodErrorPx, triangles);
+                viewWidth, viewHeight, used, missing, warnings, timings, glRenderer(), lodErrorPx, triangles, move);
         // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
         return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
     }

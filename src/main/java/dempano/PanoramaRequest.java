@@ -42,13 +42,18 @@ import java.util.Set;
  *                          skipping depth linearization and the distance interpolation (the
  *                          silhouette lines and an auto elevation range then use the nearest view
  *                          sample's range). Layers and summits need distances.
+ * @param snapToSummitMetres radius, metres, within which the viewpoint moves to the highest DEM sample
+ *                          ({@link dempano.geo.ViewpointAdjustment#highestWithin}); NaN (default) = stay
+ * @param clearViewMetres   radius, metres, within which no terrain may rise above the eye's horizontal: the
+ *                          eye is raised as far as needed ({@link dempano.geo.ViewpointAdjustment#clearViewEyeAltitudeMetres});
+ *                          NaN (default) = no lift
  */
 public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
                               double eyeHeightMetres, double rangeMetres, double pixelsPerDegree,
                               ElevationRange elevationRange, Refraction refraction, DepthMode depthMode,
                               Set<Layer> layers, double nearMetres, double supersampling, int views,
                               MissingTilePolicy missingTiles, double lodErrorPx, boolean colour,
-                              boolean distance) {
+                              boolean distance, double snapToSummitMetres, double clearViewMetres) {
     public static final double DEFAULT_RANGE_METRES = 100_000;
     public static final double DEFAULT_PIXELS_PER_DEGREE = 20;
     public static final double DEFAULT_NEAR_METRES = 1;
@@ -75,6 +80,8 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         if (!(nearMetres > 0 && nearMetres < 1000)) {
             throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
         }
+        checkRadius(snapToSummitMetres, "snap-to-summit radius");
+        checkRadius(clearViewMetres, "clear-view radius");
         layers = Set.copyOf(layers);
         if (!colour && !distance) {
             throw new IllegalArgumentException("nothing to render: both colour and distance are switched off");
@@ -96,90 +103,112 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
                 DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
                 DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true);
+                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true, Double.NaN, Double.NaN);
     }
 
     public PanoramaRequest withOffsetMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, v, altitudeMetres, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withAltitudeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, v, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withEyeHeightMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, v, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withRangeMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, v, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withPixelsPerDegree(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres, v,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withElevationRange(ElevationRange v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withRefraction(Refraction v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withDepthMode(DepthMode v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withLayers(Set<Layer> v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withNearMetres(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withSupersampling(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withViews(int v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withMissingTiles(MissingTilePolicy v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour, distance);
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withLodErrorPx(double v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
                 pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, v, colour, distance);
+                missingTiles, v, colour, distance, snapToSummitMetres, clearViewMetres);
     }
 
     public PanoramaRequest withColour(boolean v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
                 pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, v, distance);
+                missingTiles, lodErrorPx, v, distance, snapToSummitMetres, clearViewMetres);
     }
 
     /** Whether to compute the distance map; false = colour only (see the record's Javadoc). */
     public PanoramaRequest withDistance(boolean v) {
         return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
                 pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, colour, v);
+                missingTiles, lodErrorPx, colour, v, snapToSummitMetres, clearViewMetres);
+    }
+
+    /** Snap the viewpoint to the highest DEM sample within this radius, metres; NaN = off (see the record's Javadoc). */
+    public PanoramaRequest withSnapToSummitMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
+                missingTiles, lodErrorPx, colour, distance, v, clearViewMetres);
+    }
+
+    /** Raise the eye above all terrain within this radius, metres; NaN = off (see the record's Javadoc). */
+    public PanoramaRequest withClearViewMetres(double v) {
+        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
+                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
+                missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, v);
+    }
+
+    private static void checkRadius(double radiusMetres, String what) {
+        if (!Double.isNaN(radiusMetres)
+                && !(radiusMetres > 0 && radiusMetres <= dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES)) {
+            throw new IllegalArgumentException(what + " must be in (0, "
+                    + (long) dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES + "] metres, got " + radiusMetres);
+        }
     }
 }

@@ -98,6 +98,11 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent: auto (default: sea level, 0 m, with a warning for tiles beside the data, as at coasts; an error when no needed tile is present, or the viewpoint's own tile is missing and --altitude-m is not given), sea (every missing tile is sea level, with a warning) or error (fail, listing every missing tile).", defaultValue = "auto")
     String missingTiles;
 
+    @Option(names = "--snap-to-summit-m", paramLabel = "R", description = "Move the viewpoint to the highest DEM point within R metres (a surveyed summit beside the DEM's own); the move is reported.")
+    Double snapToSummitMetres;
+    @Option(names = "--clear-view-m", paramLabel = "R", description = "Raise the eye until no terrain within R metres rises above its horizontal (+0.5 m); the lift is reported.")
+    Double clearViewMetres;
+
     public static void main(String[] args) {
         System.exit(run(args));
     }
@@ -178,7 +183,9 @@ public final class Main implements Callable<Integer> {
                 .withElevationRange(ElevationRange.parse(elevationRange)).withRefraction(new Refraction(refraction))
                 .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
                 .withSupersampling(supersampling).withViews(views).withMissingTiles(policy)
-                .withLodErrorPx(lodErrorPx).withColour(!noColour).withDistance(!noDistance);
+                .withLodErrorPx(lodErrorPx).withColour(!noColour).withDistance(!noDistance)
+                .withSnapToSummitMetres(snapToSummitMetres == null ? Double.NaN : snapToSummitMetres)
+                .withClearViewMetres(clearViewMetres == null ? Double.NaN : clearViewMetres);
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && out.startsWith("build/")) {
@@ -246,6 +253,9 @@ public final class Main implements Callable<Integer> {
                 System.out.println("| run | state | total ms | stages ms |");
                 System.out.println("|---|---|---|---|");
                 table.forEach(System.out::println);
+            }
+            if (p.metadata().viewpointMove() != null) {
+                System.err.println("  " + p.metadata().viewpointMove().describe());
             }
             for (String w : p.metadata().warnings()) {
                 System.err.println("  warning: " + w);

@@ -183,6 +183,20 @@ public final class PanoramaWriter {
         vp.put("standingAltitudeMetres", m.standingAltitudeMetres());
         vp.put("eyeHeightMetres", m.eyeHeightMetres());
         vp.put("eyeAltitudeMetres", m.eyeAltitudeMetres());
+        dempano.geo.ViewpointMove mv = m.viewpointMove();
+        if (mv != null) {
+            Map<String, Object> moved = new LinkedHashMap<>();
+            moved.put("fromLatDeg", mv.fromLatDeg());
+            moved.put("fromLonDeg", mv.fromLonDeg());
+            moved.put("fromEyeAltitudeMetres", mv.fromEyeAltitudeMetres());
+            moved.put("toLatDeg", mv.toLatDeg());
+            moved.put("toLonDeg", mv.toLonDeg());
+            moved.put("toEyeAltitudeMetres", mv.toEyeAltitudeMetres());
+            moved.put("horizontalShiftMetres", mv.shiftMetres());
+            moved.put("liftMetres", mv.liftMetres());
+            moved.put("reason", mv.reason());
+            vp.put("moved", moved);
+        }
         doc.put("viewpoint", vp);
         Map<String, Object> grid = new LinkedHashMap<>();
         grid.put("pixelsPerDegree", g.pixelsPerDegree());

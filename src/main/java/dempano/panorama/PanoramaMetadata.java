@@ -29,6 +29,8 @@ import java.util.Map;
  * @param lodErrorPx            bound on the screen error of simplified terrain, pixels (0 = full resolution)
  * @param terrainTriangles      triangles in the terrain mesh drawn (0 for the CPU reference, which
  *                              intersects the full-resolution surface directly)
+ * @param viewpointMove         where the automatic corrections moved the eye from and to (the fields above
+ *                              describe the viewpoint used); null when none was asked for
  */
 public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
                                double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
@@ -36,7 +38,21 @@ public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevat
                                double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
                                List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
                                Map<String, Double> timingsMillis, String glRenderer,
-                               double lodErrorPx, long terrainTriangles) {
+                               double lodErrorPx, long terrainTriangles, dempano.geo.ViewpointMove viewpointMove) {
+    /** Metadata of a viewpoint used as requested (no automatic move). */
+    public PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
+                            double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
+                            double rangeMetres, double refractionCoefficient, DepthMode depthMode,
+                            double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
+                            List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
+                            Map<String, Double> timingsMillis, String glRenderer,
+                            double lodErrorPx, long terrainTriangles) {
+        this(latDeg, lonDeg, groundElevationMetres, offsetMetres, standingAltitudeMetres, eyeHeightMetres,
+                eyeAltitudeMetres, rangeMetres, refractionCoefficient, depthMode, nearMetres, farMetres, views,
+                viewWidthPx, viewHeightPx, tilesUsed, tilesMissing, warnings, timingsMillis, glRenderer, lodErrorPx,
+                terrainTriangles, null);
+    }
+
     /** The earth model. */
     public static final String EARTH_MODEL = "WGS84 ellipsoid (exact ECEF/ENU), heights above sea level taken as ellipsoidal";
 }

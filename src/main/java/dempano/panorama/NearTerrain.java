@@ -1,0 +1,115 @@
+package dempano.panorama;
+
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * How much of the view at and above the horizontal is taken by terrain right beside the eye: the
+ * signature of a viewpoint beside the DEM's own summit or ridge (a surveyed summit the 90 m grid
+ * rounds off), where a slope a few metres from the eye walls off the distant landscape.
+ *
+ * @param nearMetres            what counts as near: terrain closer than this, metres
+ * @param blockedColumnShare    share of the panorama's columns (azimuths) in which near terrain rises
+ *                              {@link #WALL_ELEVATION_DEG} or more above the horizontal, [0, 1]
+ * @param blockedPixelShare     share of the pixels at or above the horizontal (row centre elevation
+ *                              ≥ 0°) that show near terrain, [0, 1]
+ * @param nearestMetres         distance of the nearest terrain pixel at or above the horizontal, metres
+ *                              (+∞ when none)
+ * @param highestElevationDeg   highest elevation angle of a near terrain pixel, degrees (NaN when none)
+ * @param highestAboveEyeMetres height above the eye of that highest near pixel (distance · sin elevation), metres
+ * @param spanFromAzimuthDeg    where the longest run of blocked columns starts, degrees clockwise from north (NaN when none)
+ * @param spanToAzimuthDeg      where it ends, degrees (may be less than the start when the run crosses north)
+ */
+public record NearTerrain(double nearMetres, double blockedColumnShare, double blockedPixelShare, double nearestMetres,
+                          double highestElevationDeg, double highestAboveEyeMetres, double spanFromAzimuthDeg,
+                          double spanToAzimuthDeg) {
+    /** Terrain nearer than this is "near", metres. */
+    public static final double DEFAULT_NEAR_METRES = 50;
+    /**
+     * A column is blocked where near terrain rises this far above the horizontal, degrees: a gentle
+     * slope a few tens of metres away (the demo scene's viewpoint has one at +1°) hides a sliver of the
+     * horizon, a wall beside the eye (+20° at the Dammastock) hides the landscape behind it.
+     */
+    public static final double WALL_ELEVATION_DEG = 3;
+    /**
+     * Warn when near terrain blocks at least this share of the azimuths. Measured: 0 at the demo scene's
+     * viewpoint, Mt Washington's summit and Nice; 0.35 at the Dammastock's surveyed position beside the
+     * DEM's summit, 0 once snapped onto it.
+     */
+    public static final double WARN_BLOCKED_COLUMN_SHARE = 0.10;
+
+    /** Measures a rendered distance map (row-major, +∞ = sky) on its geometry. */
+    public static NearTerrain measure(PanoramaGeometry g, float[] distance, double nearMetres) {
+        int w = g.widthPx(), h = g.heightPx();
+        double ppd = g.pixelsPerDegree();
+        boolean[] blocked = new boolean[w];
+        long above = 0, nearPixels = 0;
+        int blockedColumns = 0;
+        double nearest = Double.POSITIVE_INFINITY, highestEl = Double.NaN, highestUp = Double.NaN;
+        for (int r = 0; r < h; r++) {
+            double el = g.topElevationDeg() - (r + 0.5) / ppd;
+            if (el < 0) {
+                break;
+            }
+            for (int c = 0; c < w; c++) {
+                above++;
+                float d = distance[r * w + c];
+                if (!Float.isFinite(d)) {
+                    continue;
+                }
+                nearest = Math.min(nearest, d);
+                if (d < nearMetres) {
+                    nearPixels++;
+                    blocked[c] |= el >= WALL_ELEVATION_DEG;
+                    if (!(el <= highestEl)) {
+                        highestEl = el;
+                        highestUp = d * Math.sin(Math.toRadians(el));
+                    }
+                }
+            }
+        }
+        int bestStart = -1, bestLength = 0;
+        for (int c = 0; c < w; c++) {
+            if (blocked[c]) {
+                blockedColumns++;
+            }
+            if (blocked[c] && !blocked[(c + w - 1) % w]) { // a run starts here
+                int length = 0;
+                while (length < w && blocked[(c + length) % w]) {
+                    length++;
+                }
+                if (length > bestLength) {
+                    bestStart = c;
+                    bestLength = length;
+                }
+            }
+        }
+        if (blockedColumns == w) {
+            bestStart = 0;
+            bestLength = w;
+        }
+        double from = bestStart < 0 ? Double.NaN : PanoramaGeometry.LEFT_AZIMUTH_DEG + bestStart / ppd;
+        double to = bestStart < 0 ? Double.NaN : (PanoramaGeometry.LEFT_AZIMUTH_DEG + (bestStart + bestLength) / ppd) % 360;
+        return new NearTerrain(nearMetres, w == 0 ? 0 : blockedColumns / (double) w,
+                above == 0 ? 0 : nearPixels / (double) above, nearest, highestEl, highestUp, from, to);
+    }
+
+    /**
+     * The warning for the user when near terrain blocks at least {@link #WARN_BLOCKED_COLUMN_SHARE}
+     * of the azimuths, with the figures and the options that move the eye; empty otherwise.
+     */
+    public Optional<String> warning() {
+        if (!(blockedColumnShare >= WARN_BLOCKED_COLUMN_SHARE)) {
+            return Optional.empty();
+        }
+        return Optional.of(String.format(Locale.ROOT,
+                "terrain nearer than %.0f m rises %.0f° or more above the horizontal in %.0f %% of the azimuths"
+                        + " (longest run %.0f°–%.0f°) and fills %.1f %% of the view above the horizontal: the nearest is %.1f m"
+                        + " from the eye, rising to %+.1f° (%.1f m above the eye). The viewpoint is probably beside"
+                        + " the DEM's own summit or ridge: --snap-to-summit-m R moves it to the highest DEM point"
+                        + " within R metres, --clear-view-m R raises the eye above the terrain within R metres,"
+                        + " --offset-m raises it by hand",
+                nearMetres, WALL_ELEVATION_DEG, 100 * blockedColumnShare, spanFromAzimuthDeg, spanToAzimuthDeg, 100 * blockedPixelShare,
+                nearestMetres, highestElevationDeg, highestAboveEyeMetres));
+    }
+}
