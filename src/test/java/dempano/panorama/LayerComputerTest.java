@@ -241,6 +241,45 @@ class LayerComputerTest {
         checkAgainstTruth(c, layers(c, eye, Refraction.NONE, m), 0.01);
     }
 
+
+    @Test
+    void normalIsTheDrawnTriangles() {
+        // Rough terrain: each cell's two triangles differ. Truth: the normal of the triangle holding the
+        // point from its three vertices in ECEF (split per Triangulation), rays from several directions.
+        DoubleBinaryOperator rough = (la, lo) -> 800 + 300 * Math.sin(la * 917) * Math.cos(lo * 613) + 40 * Math.sin(lo * 5000);
+        Mosaic m = Mosaic.around(Synthetic.dem(rough, 45, 7, 2, 2), LAT, LON, 20_000, MissingTilePolicy.ERROR);
+        int r = (int) Math.floor(m.rowOf(LAT + 0.013)), checked = 0, differ = 0;
+        for (int c0 = (int) Math.floor(m.colOf(LON + 0.021)), c = c0; c < c0 + 2; c++) {
+            for (double[] uv : new double[][] {{0.7, 0.2}, {0.2, 0.7}, {0.15, 0.3}, {0.8, 0.9}}) {
+                double lat = m.latOfRow(r + uv[1]), lon = m.lonOfCol(c + uv[0]);
+                boolean nwSe = dempano.terrain.Triangulation.splitsNorthWestToSouthEast(r, c);
+                int[][] tri = nwSe ? (uv[0] >= uv[1] ? new int[][] {{0, 0}, {0, 1}, {1, 1}} : new int[][] {{0, 0}, {1, 1}, {1, 0}})
+                        : (uv[0] + uv[1] <= 1 ? new int[][] {{0, 0}, {0, 1}, {1, 0}} : new int[][] {{0, 1}, {1, 1}, {1, 0}});
+                double[][] v = new double[3][3];
+                for (int k = 0; k < 3; k++) {
+                    int rr = r + tri[k][0], cc = c + tri[k][1];
+                    Ellipsoid.toEcef(m.latOfRow(rr), m.lonOfCol(cc), m.sample(rr, cc), v[k]);
+                }
+                double[] a = {v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
+                double[] b = {v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
+                double[] normal = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+                LocalFrame at = new LocalFrame(lat, lon, 0);
+                for (double[] azEl : new double[][] {{10, -5}, {100, -30}, {200, -1}, {290, -60}}) {
+                    double[] ray = rayEcef(at, azEl[0], azEl[1]);
+                    double truth = angleToPlaneDeg(ray, normal);
+                    double got = LayerComputer.incidenceDeg(m, lat, lon, ray, 0);
+                    assertEquals(truth, got, 0.01, "cell " + r + "," + c + " at " + Arrays.toString(uv) + " ray " + Arrays.toString(azEl));
+                    if (Math.abs(truth - angleToPlaneDeg(ray, fdNormal(rough, lat, lon))) > 1) {
+                        differ++; // the triangle is not the smooth analytic surface: this test sees the split
+                    }
+                    checked++;
+                }
+            }
+        }
+        assertEquals(32, checked);
+        assertTrue(differ >= 8, "cases where the triangle differs from the smooth surface: " + differ);
+    }
+
     @Test
     void uncertaintyFormulaAndCap() {
         assertEquals(10, LayerComputer.uncertaintyMetres(90, 5000), 1e-9);
