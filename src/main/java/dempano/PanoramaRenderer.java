@@ -212,7 +212,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         if (!req.layers().isEmpty()) {
             progress.accept("computing layers " + req.layers());
         }
-        var layers = LayerComputer.compute(req.layers(), geometry, distance, eye.eyeFrame(), req.refraction());
+        var layers = LayerComputer.compute(req.layers(), geometry, distance, eye.eyeFrame(), req.refraction(), mosaic);
         if (!req.layers().isEmpty()) {
             lap(timings, "layers", t);
         }

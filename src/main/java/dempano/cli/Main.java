@@ -56,7 +56,7 @@ public final class Main implements Callable<Integer> {
     String elevationRange;
     @Option(names = "--depth-mode", paramLabel = "MODE", description = "shader (exact float range, default), reversed32f (reversed-Z float depth), standard24 (the thesis's 24-bit linearization).", defaultValue = "shader")
     String depthMode;
-    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, comma-separated: elevation, latitude, longitude, ground-distance.")
+    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, comma-separated: elevation, latitude, longitude, ground-distance, incidence (degrees between ray and terrain), uncertainty (metres of distance error from SRTM's 10 m vertical error).")
     Set<String> layers;
     @Option(names = "--pfm", description = "Write the distance map as .pfm instead of .npy.")
     boolean pfm;

@@ -9,7 +9,21 @@ public enum Layer {
     /** Longitude of the point seen, degrees in [-180, 180). */
     LONGITUDE("longitude"),
     /** Geodesic distance on WGS84 from the viewpoint to the point seen, metres. */
-    GROUND_DISTANCE("ground-distance");
+    GROUND_DISTANCE("ground-distance"),
+    /**
+     * Angle between the ray and the tangent plane of the terrain seen, degrees in [0, 90]: 90 looking
+     * straight down on flat ground, near 0 at grazing incidence (sea and plain horizons, slopes seen
+     * edge-on). The surface is the drawn DEM triangle at the point seen, with earth curvature and the
+     * refraction lift's slope.
+     */
+    INCIDENCE("incidence"),
+    /**
+     * Estimated error of the distance, metres, from the DEM's vertical error: 10 m (SRTM's relative
+     * vertical accuracy, 90 % linear error) divided by the sine of {@link #INCIDENCE}, capped at the
+     * distance itself; a 90 % figure like the DEM's. Excludes horizontal DEM error, refraction
+     * uncertainty and the renderer's own geometric error.
+     */
+    UNCERTAINTY("uncertainty");
 
     private final String fileName;
 
@@ -28,6 +42,6 @@ public enum Layer {
                 return l;
             }
         }
-        throw new IllegalArgumentException("unknown layer '" + s + "' (use elevation, latitude, longitude, ground-distance)");
+        throw new IllegalArgumentException("unknown layer '" + s + "' (use elevation, latitude, longitude, ground-distance, incidence, uncertainty)");
     }
 }
