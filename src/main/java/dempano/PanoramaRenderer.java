@@ -5,7 +5,6 @@ import dempano.dem.DemSource;
 import dempano.dem.Mosaic;
 import dempano.geo.Viewpoint;
 import dempano.geo.ViewpointAdjustment;
-import dempano.geo.ViewpointMove;
 import dempano.panorama.DepthMode;
 import dempano.panorama.ElevationRange;
 import dempano.panorama.LayerComputer;
@@ -113,7 +112,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                 req.clearViewMetres(), req.refraction());
         Viewpoint eye = adjusted.eye();
         if (gl == null) {
-            return renderReference(req, mosaic, eye, adjusted.move(), timings, t, progress);
+            return renderReference(req, mosaic, adjusted, timings, t, progress);
         }
         progress.accept("building terrain mesh");
         Material material = gl.newTerrainMaterial(req.rangeMetres());
@@ -177,27 +176,37 @@ public final class PanoramaRenderer implements AutoCloseable {
             Stitcher.stitchColour(geometry, layout, captures, argb, distance);
         }
         t = lap(timings, "stitch", t);
-        return finish(req, mosaic, eye, adjusted.move(), geometry, argb, distance, timings, t, progress, req.views(), layout.widthPx(),
-                layout.heightPx(), req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near,
-                req.lodErrorPx(), triangles);
+        Drawing drawing = new Drawing(req.views(), layout.widthPx(), layout.heightPx(),
+                req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near, req.lodErrorPx(), triangles);
+        return finish(req, mosaic, adjusted, geometry, argb, distance, drawing, timings, t, progress);
     }
 
-    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ViewpointMove move, Map<String, Double> timings,
-                                     long t, Consumer<String> progress) {
+    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, ViewpointAdjustment.Adjusted adjusted,
+                                     Map<String, Double> timings, long t, Consumer<String> progress) {
+        Viewpoint eye = adjusted.eye();
         ElevationRange er = req.elevationRange();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         progress.accept("sweeping " + geometry.widthPx() + " columns on the CPU");
         var result = dempano.reference.ReferenceRenderer.render(mosaic, eye, req.refraction(), req.rangeMetres(),
                 geometry, req.colour());
         t = lap(timings, "render", t);
-        return finish(req, mosaic, eye, move, geometry, result.argb(), result.distanceMetres(), timings, t, progress,
-                req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0);
+        return finish(req, mosaic, adjusted, geometry, result.argb(), result.distanceMetres(),
+                new Drawing(req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), timings, t, progress);
     }
 
-    private Panorama finish(PanoramaRequest req, Mosaic mosaic, Viewpoint eye, ViewpointMove move, PanoramaGeometry geometry, int[] argb,
-                            float[] distance, Map<String, Double> timings, long t, Consumer<String> progress,
-                            int views, int viewWidth, int viewHeight, double far, double near, double lodErrorPx,
-                            long triangles) {
+    /**
+     * How the views were drawn, for the metadata (zeros and an infinite far plane for the CPU reference).
+     *
+     * @param farMetres far plane that bounds distances (infinite unless the depth mode has one)
+     */
+    private record Drawing(int views, int viewWidthPx, int viewHeightPx, double farMetres, double nearMetres,
+                           double lodErrorPx, long triangles) {
+    }
+
+    private Panorama finish(PanoramaRequest req, Mosaic mosaic, ViewpointAdjustment.Adjusted adjusted,
+                            PanoramaGeometry geometry, int[] argb, float[] distance, Drawing drawing,
+                            Map<String, Double> timings, long t, Consumer<String> progress) {
+        Viewpoint eye = adjusted.eye();
         if (argb != null) {
             Silhouettes.draw(argb, distance, geometry.widthPx(), geometry.heightPx());
         }
@@ -226,8 +235,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         }
         PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
-                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), near, far, views,
-                viewWidth, viewHeight, used, missing, warnings, timings, glRenderer(), lodErrorPx, triangles, move);
+                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), drawing.nearMetres(), drawing.farMetres(),
+                drawing.views(), drawing.viewWidthPx(), drawing.viewHeightPx(), used, missing, warnings, timings, glRenderer(),
+                drawing.lodErrorPx(), drawing.triangles(), adjusted.move());
         // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
         return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
     }
