@@ -61,7 +61,8 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
                 eyeHeightMetres);
     }
 
-    private static double groundAt(Mosaic mosaic, double latDeg, double lonDeg) {
+    /** The DEM's bilinear height at a point, metres; an error naming the point where the mosaic has none. */
+    static double groundAt(Mosaic mosaic, double latDeg, double lonDeg) {
         double h = mosaic.heightAt(latDeg, lonDeg);
         if (Double.isNaN(h)) {
             throw new IllegalArgumentException(String.format(Locale.ROOT,

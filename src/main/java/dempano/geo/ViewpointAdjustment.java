@@ -47,7 +47,7 @@ public final class ViewpointAdjustment {
      */
     public static GridPoint highestWithin(Mosaic mosaic, double latDeg, double lonDeg, double radiusMetres) {
         checkRadius(radiusMetres, "--snap-to-summit-m");
-        double here = groundAt(mosaic, latDeg, lonDeg);
+        double here = Viewpoint.groundAt(mosaic, latDeg, lonDeg);
         GridPoint best = new GridPoint(latDeg, lonDeg, here, 0);
         Scan s = new Scan(mosaic, latDeg, lonDeg, radiusMetres);
         for (int r = s.r0; r <= s.r1; r++) {
@@ -84,7 +84,7 @@ public final class ViewpointAdjustment {
     public static double clearViewEyeAltitudeMetres(Mosaic mosaic, double latDeg, double lonDeg, double radiusMetres,
                                                     Refraction refraction) {
         checkRadius(radiusMetres, "--clear-view-m");
-        double top = groundAt(mosaic, latDeg, lonDeg);
+        double top = Viewpoint.groundAt(mosaic, latDeg, lonDeg);
         Scan s = new Scan(mosaic, latDeg, lonDeg, radiusMetres);
         for (int r = s.r0; r <= s.r1; r++) {
             for (int c = s.c0; c <= s.c1; c++) {
@@ -182,15 +182,6 @@ public final class ViewpointAdjustment {
             throw new IllegalArgumentException(String.format(Locale.ROOT, "%s: the radius must be in (0, %.0f] metres, got %s",
                     option, MAX_RADIUS_METRES, radiusMetres));
         }
-    }
-
-    private static double groundAt(Mosaic mosaic, double latDeg, double lonDeg) {
-        double h = mosaic.heightAt(latDeg, lonDeg);
-        if (Double.isNaN(h)) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "the DEM mosaic has no height at %.6f, %.6f", latDeg, lonDeg));
-        }
-        return h;
     }
 
     private static double wrapLon(double lonDeg) {
