@@ -39,20 +39,6 @@ public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevat
                                List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
                                Map<String, Double> timingsMillis, String glRenderer,
                                double lodErrorPx, long terrainTriangles, dempano.geo.ViewpointMove viewpointMove) {
-    /** Metadata of a viewpoint used as requested (no automatic move). */
-    public PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
-                            double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
-                            double rangeMetres, double refractionCoefficient, DepthMode depthMode,
-                            double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
-                            List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
-                            Map<String, Double> timingsMillis, String glRenderer,
-                            double lodErrorPx, long terrainTriangles) {
-        this(latDeg, lonDeg, groundElevationMetres, offsetMetres, standingAltitudeMetres, eyeHeightMetres,
-                eyeAltitudeMetres, rangeMetres, refractionCoefficient, depthMode, nearMetres, farMetres, views,
-                viewWidthPx, viewHeightPx, tilesUsed, tilesMissing, warnings, timingsMillis, glRenderer, lodErrorPx,
-                terrainTriangles, null);
-    }
-
     /** The earth model. */
     public static final String EARTH_MODEL = "WGS84 ellipsoid (exact ECEF/ENU), heights above sea level taken as ellipsoidal";
 }
