@@ -1,0 +1,293 @@
+package dempano.camera;
+
+/**
+ * A camera's intrinsic calibration in OpenCV's model and conventions, so the numbers of an OpenCV calibration
+ * ({@code cameraMatrix} = [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] and {@code distCoeffs} = (k1, k2, p1, p2, k3))
+ * are used as they are.
+ *
+ * <h2>Conventions</h2>
+ * <ul>
+ *   <li><b>Camera frame</b> (OpenCV): x to the image's right, y to the image's bottom, z forward along the
+ *       optical axis; right-handed.</li>
+ *   <li><b>Pixel coordinates</b> (OpenCV): the centre of pixel (column i, row j) is at (i, j); the image covers
+ *       [−0.5, w − 0.5] × [−0.5, h − 0.5]; row 0 is the top. The centred principal point is therefore
+ *       ((w − 1)/2, (h − 1)/2), which is what OpenCV's {@code getDefaultNewCameraMatrix(…, centerPrincipalPoint
+ *       = true)} and {@code initCameraMatrix2D} use (checked with OpenCV 5.0: 640 × 480 gives (319.5, 239.5)).</li>
+ *   <li><b>Pixels as displayed</b>: width, height and all pixel coordinates refer to the image after its EXIF
+ *       orientation is applied (see {@link PhotoMetadata}). An OpenCV calibration made on the stored
+ *       (unrotated) frames of a camera that writes orientation 5–8 must be done on the displayed images
+ *       instead.</li>
+ *   <li><b>Projection</b>: a ray (X, Y, Z) with Z &gt; 0 has normalized coordinates (X/Z, Y/Z), distorted by
+ *       {@link LensDistortion}, then pixel = (fx·x_d + cx, fy·y_d + cy): exactly {@code cv::projectPoints}
+ *       with a zero rotation and translation.</li>
+ *   <li><b>Field of view</b>: the angle between the rays through the image's outer edges (x = −0.5 and
+ *       x = w − 0.5 at row cy for the horizontal one), so a centred pinhole camera has
+ *       hfov = 2·atan(w / (2·fx)).</li>
+ * </ul>
+ *
+ * <h2>Inverse (undistortion)</h2>
+ * {@link #rayOf} inverts the distortion with Newton's method (analytic Jacobian, started at the distorted
+ * point, steps halved until they stay in the valid domain and reduce the residual), stopping when the
+ * re-projected point is within {@link #UNDISTORT_TOLERANCE_PX} of the pixel. It converges for every pixel that
+ * is the image of a point in the distortion's valid domain (see {@link LensDistortion}: there the radial map is
+ * strictly increasing, so the inverse is unique); other pixels (beyond the fold of a strong barrel polynomial)
+ * have no ray and give NaN. With zero distortion it is the closed form ((px − cx)/fx, (py − cy)/fy, 1).
+ *
+ * @param widthPx    image width as displayed, pixels (≥ 1)
+ * @param heightPx   image height as displayed, pixels (≥ 1)
+ * @param fxPx       focal length in pixels along x (&gt; 0)
+ * @param fyPx       focal length in pixels along y (&gt; 0; = fx for square pixels)
+ * @param cxPx       principal point x, pixels, OpenCV convention (centred: (w − 1)/2)
+ * @param cyPx       principal point y, pixels, OpenCV convention (centred: (h − 1)/2)
+ * @param distortion lens distortion ({@link LensDistortion#NONE} for a pinhole camera)
+ */
+public record CameraIntrinsics(int widthPx, int heightPx, double fxPx, double fyPx, double cxPx, double cyPx,
+                               LensDistortion distortion) {
+    /** Diagonal of the 36 × 24 mm frame, mm: √(36² + 24²) = 43.2666 mm. */
+    public static final double DIAGONAL_35MM_MM = Math.hypot(36, 24);
+
+    /** When {@link #rayOf} stops: the ray re-projects to within this many pixels of the asked pixel. */
+    public static final double UNDISTORT_TOLERANCE_PX = 1e-9;
+
+    /** At most this many Newton steps in {@link #rayOf} (a few suffice in the valid domain; see the tests). */
+    public static final int UNDISTORT_MAX_ITERATIONS = 100;
+
+    public CameraIntrinsics {
+        if (widthPx < 1 || heightPx < 1) {
+            throw new IllegalArgumentException("image size must be at least 1 × 1 pixels, got " + widthPx + " × " + heightPx);
+        }
+        if (!(fxPx > 0 && fxPx < Double.POSITIVE_INFINITY) || !(fyPx > 0 && fyPx < Double.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("focal lengths in pixels must be positive and finite, got fx " + fxPx
+                    + ", fy " + fyPx);
+        }
+        if (!Double.isFinite(cxPx) || !Double.isFinite(cyPx)) {
+            throw new IllegalArgumentException("principal point must be finite, got " + cxPx + ", " + cyPx);
+        }
+        if (distortion == null) {
+            throw new IllegalArgumentException("distortion must be given (LensDistortion.NONE for none)");
+        }
+    }
+
+    /** A distortion-free camera with square pixels and the principal point at the image centre. */
+    public static CameraIntrinsics pinhole(int widthPx, int heightPx, double focalPx) {
+        return new CameraIntrinsics(widthPx, heightPx, focalPx, focalPx, centre(widthPx), centre(heightPx),
+                LensDistortion.NONE);
+    }
+
+    /** The centred principal point coordinate for a size, pixels: (n − 1)/2 (OpenCV convention). */
+    public static double centre(int sizePx) {
+        return (sizePx - 1) / 2.0;
+    }
+
+    /**
+     * From the lens's focal length and the sensor's size: fx = fy = focalMm · max(w, h) / sensorWidthMm.
+     *
+     * @param focalLengthMm the lens's actual focal length, mm (EXIF FocalLength)
+     * @param sensorWidthMm the sensor's long side, mm, which the image's long side is taken to span (true of a
+     *                      full-frame image and of a 16:9 crop of a 4:3 sensor; not of digital zoom)
+     */
+    public static CameraIntrinsics fromFocalLength(int widthPx, int heightPx, double focalLengthMm,
+                                                   double sensorWidthMm) {
+        if (!(focalLengthMm > 0 && focalLengthMm < 1e5) || !(sensorWidthMm > 0 && sensorWidthMm < 1e4)) {
+            throw new IllegalArgumentException("focal length and sensor width must be positive millimetres, got "
+                    + focalLengthMm + " mm and " + sensorWidthMm + " mm");
+        }
+        return pinhole(widthPx, heightPx, focalLengthMm * Math.max(widthPx, heightPx) / sensorWidthMm);
+    }
+
+    /**
+     * From a 35 mm-equivalent focal length, diagonal definition: the focal length that gives the image's
+     * diagonal the same angle of view as a 36 × 24 mm frame's diagonal (43.27 mm), i.e.
+     * fx = fy = focal35 · √(w² + h²) / 43.27. This is how cameras and phones compute EXIF FocalLengthIn35mmFilm
+     * (the CIPA DC-008 tag itself does not define it). For a 3:2 image it equals the width definition
+     * focal35 · w / 36; for a 4:3 image the width definition would give fx 4 % smaller.
+     *
+     * @param focal35mmMm the 35 mm-equivalent focal length, mm
+     */
+    public static CameraIntrinsics fromFocal35mm(int widthPx, int heightPx, double focal35mmMm) {
+        if (!(focal35mmMm > 0 && focal35mmMm < 1e5)) {
+            throw new IllegalArgumentException("35 mm-equivalent focal length must be positive millimetres, got "
+                    + focal35mmMm);
+        }
+        return pinhole(widthPx, heightPx, focal35mmMm * Math.hypot(widthPx, heightPx) / DIAGONAL_35MM_MM);
+    }
+
+    /**
+     * From the horizontal field of view across the displayed image's full width (edge to edge):
+     * fx = fy = (w / 2) / tan(hfov / 2).
+     *
+     * @param horizontalFovDeg degrees, in (0, 180)
+     */
+    public static CameraIntrinsics fromHorizontalFov(int widthPx, int heightPx, double horizontalFovDeg) {
+        if (!(horizontalFovDeg > 0 && horizontalFovDeg < 180)) {
+            throw new IllegalArgumentException("horizontal field of view must be in (0°, 180°), got " + horizontalFovDeg);
+        }
+        return pinhole(widthPx, heightPx, widthPx / 2.0 / Math.tan(Math.toRadians(horizontalFovDeg) / 2));
+    }
+
+    /** The same camera with another lens distortion. */
+    public CameraIntrinsics withDistortion(LensDistortion d) {
+        return new CameraIntrinsics(widthPx, heightPx, fxPx, fyPx, cxPx, cyPx, d);
+    }
+
+    /**
+     * The ray through a pixel, in the camera frame (x right, y down, z forward), as a unit vector.
+     *
+     * @param px  column, pixels (OpenCV convention: pixel i's centre at i); any value, not only inside the image
+     * @param py  row, pixels, 0 on top
+     * @param out receives {x, y, z} with z &gt; 0, or three NaN when the pixel has no ray (beyond the fold of the
+     *            distortion polynomial, or NaN input)
+     */
+    public void rayOf(double px, double py, double[] out) {
+        double xd = (px - cxPx) / fxPx, yd = (py - cyPx) / fyPx;
+        double x, y;
+        if (distortion.isNone()) {
+            x = xd;
+            y = yd;
+        } else {
+            double[] u = undistort(xd, yd);
+            if (u == null) {
+                out[0] = out[1] = out[2] = Double.NaN;
+                return;
+            }
+            x = u[0];
+            y = u[1];
+        }
+        double norm = Math.sqrt(x * x + y * y + 1);
+        if (!(norm < Double.POSITIVE_INFINITY)) {
+            out[0] = out[1] = out[2] = Double.NaN;
+            return;
+        }
+        out[0] = x / norm;
+        out[1] = y / norm;
+        out[2] = 1 / norm;
+    }
+
+    /** {@link #rayOf(double, double, double[])} into a new array. */
+    public double[] rayOf(double px, double py) {
+        double[] out = new double[3];
+        rayOf(px, py, out);
+        return out;
+    }
+
+    /**
+     * The pixel a camera-frame direction projects to (need not be a unit vector): exactly OpenCV's
+     * {@code projectPoints}.
+     *
+     * @param out receives {px, py} in the OpenCV pixel convention, possibly outside the image; NaN when z ≤ 0
+     *            (behind the camera or in its focal plane), for non-finite input, or when the direction lies
+     *            outside the distortion's valid domain (see {@link LensDistortion})
+     */
+    public void pixelOf(double x, double y, double z, double[] out) {
+        if (!(z > 0) || !Double.isFinite(x) || !Double.isFinite(y) || !(z < Double.POSITIVE_INFINITY)) {
+            out[0] = out[1] = Double.NaN;
+            return;
+        }
+        double xn = x / z, yn = y / z;
+        if (!distortion.isValid(xn, yn)) {
+            out[0] = out[1] = Double.NaN;
+            return;
+        }
+        distortion.distort(xn, yn, out);
+        out[0] = fxPx * out[0] + cxPx;
+        out[1] = fyPx * out[1] + cyPx;
+    }
+
+    /** {@link #pixelOf(double, double, double, double[])} into a new array. */
+    public double[] pixelOf(double x, double y, double z) {
+        double[] out = new double[2];
+        pixelOf(x, y, z, out);
+        return out;
+    }
+
+    /** Whether a pixel coordinate lies on the image: [−0.5, w − 0.5) × [−0.5, h − 0.5). False for NaN. */
+    public boolean contains(double px, double py) {
+        return px >= -0.5 && px < widthPx - 0.5 && py >= -0.5 && py < heightPx - 0.5;
+    }
+
+    /** Angle between the rays through the left and right image edges at row cy, degrees; NaN if one has no ray. */
+    public double horizontalFovDeg() {
+        return angleDeg(rayOf(-0.5, cyPx), rayOf(widthPx - 0.5, cyPx));
+    }
+
+    /** Angle between the rays through the top and bottom image edges at column cx, degrees; NaN if one has no ray. */
+    public double verticalFovDeg() {
+        return angleDeg(rayOf(cxPx, -0.5), rayOf(cxPx, heightPx - 0.5));
+    }
+
+    /** Angle between the rays through the top-left and bottom-right image corners, degrees; NaN if one has no ray. */
+    public double diagonalFovDeg() {
+        return angleDeg(rayOf(-0.5, -0.5), rayOf(widthPx - 0.5, heightPx - 0.5));
+    }
+
+    /** Angle between two unit vectors, degrees, accurate at every angle (atan2 of cross and dot products). */
+    static double angleDeg(double[] a, double[] b) {
+        double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+        double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        return Math.toDegrees(Math.atan2(Math.sqrt(cx * cx + cy * cy + cz * cz), dot));
+    }
+
+    /**
+     * Newton's method for the normalized undistorted point whose distortion is (xd, yd); null when none is found
+     * in the valid domain.
+     */
+    private double[] undistort(double xd, double yd) {
+        if (!Double.isFinite(xd) || !Double.isFinite(yd)) {
+            return null;
+        }
+        LensDistortion d = distortion;
+        double toPx = Math.max(fxPx, fyPx);
+        double x = xd, y = yd;
+        // Start inside the valid domain: pull the start toward the centre until it is.
+        for (int i = 0; i < 60 && !d.isValid(x, y); i++) {
+            x *= 0.5;
+            y *= 0.5;
+        }
+        if (!d.isValid(x, y)) {
+            return null;
+        }
+        double[] f = new double[2];
+        double[] j = new double[4];
+        d.distort(x, y, f);
+        double rx = f[0] - xd, ry = f[1] - yd;
+        double res = Math.hypot(rx, ry);
+        for (int it = 0; it < UNDISTORT_MAX_ITERATIONS; it++) {
+            if (res * toPx <= UNDISTORT_TOLERANCE_PX) {
+                return new double[] {x, y};
+            }
+            d.jacobian(x, y, j);
+            double det = j[0] * j[3] - j[1] * j[2];
+            if (!(Math.abs(det) > 0)) {
+                return null;
+            }
+            double sx = (j[3] * rx - j[1] * ry) / det;
+            double sy = (-j[2] * rx + j[0] * ry) / det;
+            double lambda = 1;
+            boolean moved = false;
+            for (int h = 0; h < 60; h++, lambda *= 0.5) {
+                double nx = x - lambda * sx, ny = y - lambda * sy;
+                if (!d.isValid(nx, ny)) {
+                    continue;
+                }
+                d.distort(nx, ny, f);
+                double nrx = f[0] - xd, nry = f[1] - yd;
+                double nres = Math.hypot(nrx, nry);
+                if (nres < res) {
+                    x = nx;
+                    y = ny;
+                    rx = nrx;
+                    ry = nry;
+                    res = nres;
+                    moved = true;
+                    break;
+                }
+            }
+            if (!moved) {
+                // No step inside the domain reduces the residual: the pixel lies beyond the fold, or the
+                // residual is at rounding level already.
+                return res * toPx <= UNDISTORT_TOLERANCE_PX ? new double[] {x, y} : null;
+            }
+        }
+        return res * toPx <= UNDISTORT_TOLERANCE_PX ? new double[] {x, y} : null;
+    }
+}
