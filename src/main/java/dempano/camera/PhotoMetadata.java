@@ -1,0 +1,534 @@
+package dempano.camera;
+
+import com.adobe.internal.xmp.XMPException;
+import com.adobe.internal.xmp.XMPMeta;
+import com.adobe.internal.xmp.properties.XMPProperty;
+import com.drew.imaging.ImageMetadataReader;
+import com.drew.imaging.ImageProcessingException;
+import com.drew.lang.GeoLocation;
+import com.drew.lang.Rational;
+import com.drew.metadata.Directory;
+import com.drew.metadata.Metadata;
+import com.drew.metadata.exif.ExifIFD0Directory;
+import com.drew.metadata.exif.ExifSubIFDDirectory;
+import com.drew.metadata.exif.GpsDirectory;
+import com.drew.metadata.jpeg.JpegDirectory;
+import com.drew.metadata.png.PngDirectory;
+import com.drew.metadata.xmp.XmpDirectory;
+import dempano.geo.Viewpoint;
+import dempano.io.IoMessages;
+import java.io.BufferedInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * What a photograph's EXIF and XMP metadata say about its camera; NaN (or 0 for sizes and the orientation, null
+ * for the XMP source) = not in the file.
+ *
+ * <p>Read with metadata-extractor: EXIF GPS (GPSLatitude/GPSLongitude with their N/S, E/W refs; GPSAltitude with
+ * GPSAltitudeRef 1 = below sea level, made negative; GPSImgDirection with GPSImgDirectionRef), EXIF FocalLength,
+ * FocalLengthIn35mmFilm (0 = unknown, as the EXIF standard says), FocalPlaneX/YResolution with its unit (for the
+ * sensor size), Orientation; the image size from the JPEG frame header (or PNG header, else the EXIF pixel
+ * dimensions); XMP {@code drone-dji:GimbalYawDegree/GimbalPitchDegree/GimbalRollDegree} (DJI; yaw from true north,
+ * pitch positive up, roll positive right side down: this project's {@link CameraOrientation} convention) or else
+ * {@code GPano:PoseHeadingDegrees/PosePitchDegrees/PoseRollDegrees}. The Pix4D {@code camera:Yaw/Pitch/Roll}
+ * properties are not read: their zero and signs differ between the drones that write them.
+ *
+ * <p><b>Orientation.</b> Width and height are of the image as displayed: EXIF orientations 5–8 (a quarter turn,
+ * possibly mirrored) swap the stored width and height. Every pixel coordinate of the camera model refers to the
+ * displayed image, so pixels read with a library that ignores the tag (Java's ImageIO does) must be turned first.
+ *
+ * <p><b>GPS position 0°, 0°</b>, which cameras without a fix write, counts as absent.
+ *
+ * @param source              the file, for messages
+ * @param widthPx             displayed width, pixels; 0 = unknown
+ * @param heightPx            displayed height, pixels; 0 = unknown
+ * @param orientation         EXIF Orientation 1–8 as written; 0 = no tag (displayed as stored)
+ * @param latDeg              GPS latitude, degrees, north positive
+ * @param lonDeg              GPS longitude, degrees, east positive
+ * @param gpsAltitudeMetres   GPS altitude, metres above sea level (negative below)
+ * @param imageDirectionDeg   GPSImgDirection: the direction the camera pointed, degrees clockwise from
+ *                            {@code imageDirectionReference}'s north
+ * @param imageDirectionReference north of {@code imageDirectionDeg}
+ * @param focalLengthMm       the lens's focal length, mm
+ * @param focal35mmMm         35 mm-equivalent focal length, mm (whole millimetres in EXIF)
+ * @param sensorWidthMm       the sensor's long side, mm, from the focal-plane resolution (pixels per unit of the
+ *                            sensor at the EXIF pixel size)
+ * @param xmpYawDeg           XMP yaw (heading), degrees clockwise from true north
+ * @param xmpPitchDeg         XMP pitch, degrees, positive up
+ * @param xmpRollDeg          XMP roll, degrees, positive clockwise as the photographer sees it
+ * @param xmpAttitudeSource   which XMP properties gave the attitude ("drone-dji:Gimbal…Degree" or
+ *                            "GPano:Pose…Degrees"); null = none
+ * @param problems            what the reader could not make sense of (corrupt directories, unknown units), for
+ *                            messages; empty when all went well
+ */
+public record PhotoMetadata(String source, int widthPx, int heightPx, int orientation, double latDeg,
+                            double lonDeg, double gpsAltitudeMetres, double imageDirectionDeg,
+                            DirectionReference imageDirectionReference, double focalLengthMm, double focal35mmMm,
+                            double sensorWidthMm, double xmpYawDeg, double xmpPitchDeg, double xmpRollDeg,
+                            String xmpAttitudeSource, List<String> problems) {
+    /** XMP namespace of DJI drones' {@code drone-dji:} properties. */
+    public static final String DJI_NAMESPACE = "http://www.dji.com/drone-dji/1.0/";
+    /** XMP namespace of Google's photo-sphere {@code GPano:} properties. */
+    public static final String GPANO_NAMESPACE = "http://ns.google.com/photos/1.0/panorama/";
+
+    public PhotoMetadata {
+        if (imageDirectionReference == null) {
+            imageDirectionReference = DirectionReference.NOT_GIVEN;
+        }
+        problems = List.copyOf(problems);
+    }
+
+    /**
+     * Reads a photograph's metadata.
+     *
+     * @throws PhotoMetadataException naming the file when it is missing, unreadable, not an image format
+     *                                metadata-extractor knows, or too corrupt to give the image size
+     */
+    public static PhotoMetadata read(Path file) {
+        String name = file.toString();
+        if (Files.isDirectory(file)) {
+            throw new PhotoMetadataException(name + ": is a folder, not a photograph");
+        }
+        Metadata metadata;
+        try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
+            metadata = ImageMetadataReader.readMetadata(in, Files.size(file));
+        } catch (ImageProcessingException e) {
+            throw new PhotoMetadataException(name + ": not a photograph whose metadata can be read ("
+                    + plain(e.getMessage()) + ")", e);
+        } catch (IOException e) {
+            throw new PhotoMetadataException(name + ": cannot read the photograph: " + IoMessages.reason(e), e);
+        } catch (RuntimeException e) {
+            // metadata-extractor may fail on malformed input with unchecked exceptions.
+            throw new PhotoMetadataException(name + ": corrupt photograph (" + plain(e.getMessage()) + ")", e);
+        }
+        PhotoMetadata m = of(metadata, name);
+        if (m.widthPx() == 0) {
+            throw new PhotoMetadataException(name + ": corrupt or unsupported photograph: no image size found"
+                    + (m.problems().isEmpty() ? "" : " (" + String.join("; ", m.problems()) + ")"));
+        }
+        return m;
+    }
+
+    private static String plain(String message) {
+        return message == null || message.isBlank() ? "unknown format" : message;
+    }
+
+    /** The values in already-read metadata; {@code source} names the file in messages. */
+    public static PhotoMetadata of(Metadata metadata, String source) {
+        List<String> problems = new ArrayList<>();
+        for (Directory d : metadata.getDirectories()) {
+            for (String error : d.getErrors()) {
+                problems.add(d.getName() + ": " + error);
+            }
+        }
+        int storedWidth = 0, storedHeight = 0;
+        JpegDirectory jpeg = metadata.getFirstDirectoryOfType(JpegDirectory.class);
+        PngDirectory png = metadata.getFirstDirectoryOfType(PngDirectory.class);
+        ExifSubIFDDirectory exif = metadata.getFirstDirectoryOfType(ExifSubIFDDirectory.class);
+        if (jpeg != null && jpeg.getInteger(JpegDirectory.TAG_IMAGE_WIDTH) != null
+                && jpeg.getInteger(JpegDirectory.TAG_IMAGE_HEIGHT) != null) {
+            storedWidth = jpeg.getInteger(JpegDirectory.TAG_IMAGE_WIDTH);
+            storedHeight = jpeg.getInteger(JpegDirectory.TAG_IMAGE_HEIGHT);
+        } else if (png != null && png.getInteger(PngDirectory.TAG_IMAGE_WIDTH) != null
+                && png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT) != null) {
+            storedWidth = png.getInteger(PngDirectory.TAG_IMAGE_WIDTH);
+            storedHeight = png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT);
+        } else if (exif != null && exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH) != null
+                && exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT) != null) {
+            storedWidth = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH);
+            storedHeight = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT);
+        }
+        if (storedWidth < 0 || storedHeight < 0) {
+            storedWidth = storedHeight = 0;
+        }
+
+        int orientation = 0;
+        ExifIFD0Directory ifd0 = metadata.getFirstDirectoryOfType(ExifIFD0Directory.class);
+        if (ifd0 != null && ifd0.getInteger(ExifIFD0Directory.TAG_ORIENTATION) != null) {
+            orientation = ifd0.getInteger(ExifIFD0Directory.TAG_ORIENTATION);
+            if (orientation < 1 || orientation > 8) {
+                problems.add("EXIF Orientation " + orientation + " is not 1–8: taken as 1 (displayed as stored)");
+                orientation = 0;
+            }
+        }
+        boolean quarterTurn = orientation >= 5;
+        int width = quarterTurn ? storedHeight : storedWidth;
+        int height = quarterTurn ? storedWidth : storedHeight;
+
+        double lat = Double.NaN, lon = Double.NaN, alt = Double.NaN, dir = Double.NaN;
+        DirectionReference dirRef = DirectionReference.NOT_GIVEN;
+        GpsDirectory gps = metadata.getFirstDirectoryOfType(GpsDirectory.class);
+        if (gps != null) {
+            GeoLocation location = gps.getGeoLocation();
+            if (location != null && !location.isZero() && Double.isFinite(location.getLatitude())
+                    && Double.isFinite(location.getLongitude())) {
+                lat = location.getLatitude();
+                lon = location.getLongitude();
+            }
+            alt = value(gps.getRational(GpsDirectory.TAG_ALTITUDE));
+            Integer altRef = gps.getInteger(GpsDirectory.TAG_ALTITUDE_REF);
+            if (altRef != null && altRef == 1) {
+                alt = -alt;
+            }
+            dir = value(gps.getRational(GpsDirectory.TAG_IMG_DIRECTION));
+            String ref = gps.getString(GpsDirectory.TAG_IMG_DIRECTION_REF);
+            if (ref != null && ref.trim().equalsIgnoreCase("T")) {
+                dirRef = DirectionReference.TRUE;
+            } else if (ref != null && ref.trim().equalsIgnoreCase("M")) {
+                dirRef = DirectionReference.MAGNETIC;
+            } else if (ref != null) {
+                problems.add("GPSImgDirectionRef \"" + ref.trim() + "\" is neither T nor M");
+            }
+        }
+
+        double focal = Double.NaN, focal35 = Double.NaN, sensorWidth = Double.NaN;
+        if (exif != null) {
+            focal = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_LENGTH)));
+            Integer f35 = exif.getInteger(ExifSubIFDDirectory.TAG_35MM_FILM_EQUIV_FOCAL_LENGTH);
+            focal35 = f35 == null ? Double.NaN : positive(f35);
+            sensorWidth = sensorLongSideMm(exif, storedWidth, storedHeight, problems);
+        }
+
+        double yaw = Double.NaN, pitch = Double.NaN, roll = Double.NaN;
+        String attitudeSource = null;
+        for (XmpDirectory xmp : metadata.getDirectoriesOfType(XmpDirectory.class)) {
+            XMPMeta meta = xmp.getXMPMeta();
+            if (meta == null || attitudeSource != null) {
+                continue;
+            }
+            double y = xmpDouble(meta, DJI_NAMESPACE, "GimbalYawDegree", problems);
+            double p = xmpDouble(meta, DJI_NAMESPACE, "GimbalPitchDegree", problems);
+            double r = xmpDouble(meta, DJI_NAMESPACE, "GimbalRollDegree", problems);
+            String src = "drone-dji:Gimbal{Yaw,Pitch,Roll}Degree";
+            if (Double.isNaN(y) && Double.isNaN(p) && Double.isNaN(r)) {
+                y = xmpDouble(meta, GPANO_NAMESPACE, "PoseHeadingDegrees", problems);
+                p = xmpDouble(meta, GPANO_NAMESPACE, "PosePitchDegrees", problems);
+                r = xmpDouble(meta, GPANO_NAMESPACE, "PoseRollDegrees", problems);
+                src = "GPano:Pose{Heading,Pitch,Roll}Degrees";
+            }
+            if (!Double.isNaN(y) || !Double.isNaN(p) || !Double.isNaN(r)) {
+                yaw = y;
+                pitch = p;
+                roll = r;
+                attitudeSource = src;
+            }
+        }
+        return new PhotoMetadata(source, width, height, orientation, lat, lon, alt, dir, dirRef, focal, focal35,
+                sensorWidth, yaw, pitch, roll, attitudeSource, problems);
+    }
+
+    private static double value(Rational r) {
+        if (r == null || r.getDenominator() == 0) {
+            return Double.NaN;
+        }
+        double v = r.doubleValue();
+        return Double.isFinite(v) ? v : Double.NaN;
+    }
+
+    private static double positive(double v) {
+        return v > 0 ? v : Double.NaN;
+    }
+
+    /** The sensor's long side from FocalPlaneX/YResolution (pixels per unit at the EXIF pixel size), mm; NaN if absent. */
+    private static double sensorLongSideMm(ExifSubIFDDirectory exif, int storedWidth, int storedHeight,
+                                           List<String> problems) {
+        double xRes = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_PLANE_X_RESOLUTION)));
+        double yRes = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_PLANE_Y_RESOLUTION)));
+        if (Double.isNaN(xRes) || Double.isNaN(yRes)) {
+            return Double.NaN;
+        }
+        Integer unit = exif.getInteger(ExifSubIFDDirectory.TAG_FOCAL_PLANE_RESOLUTION_UNIT);
+        double unitMm;
+        int u = unit == null ? 2 : unit; // EXIF default: inches
+        switch (u) {
+            case 2 -> unitMm = 25.4;
+            case 3 -> unitMm = 10;
+            case 4 -> unitMm = 1;
+            case 5 -> unitMm = 0.001;
+            default -> {
+                problems.add("FocalPlaneResolutionUnit " + u + " is not inch, cm, mm or µm: sensor size not used");
+                return Double.NaN;
+            }
+        }
+        Integer w = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH);
+        Integer h = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT);
+        int pw = w != null && w > 0 ? w : storedWidth, ph = h != null && h > 0 ? h : storedHeight;
+        if (pw <= 0 || ph <= 0) {
+            return Double.NaN;
+        }
+        return Math.max(pw / xRes, ph / yRes) * unitMm;
+    }
+
+    private static double xmpDouble(XMPMeta meta, String namespace, String property, List<String> problems) {
+        try {
+            XMPProperty p = meta.getProperty(namespace, property);
+            if (p == null || p.getValue() == null) {
+                return Double.NaN;
+            }
+            String text = p.getValue().trim();
+            try {
+                double v = Double.parseDouble(text);
+                if (Double.isFinite(v)) {
+                    return v;
+                }
+            } catch (NumberFormatException e) {
+                // reported below
+            }
+            problems.add("XMP " + property + " \"" + text + "\" is not a number");
+            return Double.NaN;
+        } catch (XMPException e) {
+            return Double.NaN; // the namespace is not in this file
+        }
+    }
+
+    /** Whether the displayed image is the stored one turned a quarter (EXIF orientation 5–8). */
+    public boolean quarterTurn() {
+        return orientation >= 5;
+    }
+
+    /**
+     * What is missing to make the photo's camera, each with the flag that supplies it; empty when
+     * {@link #resolve} will succeed.
+     */
+    public List<String> missing(PhotoOverrides overrides) {
+        List<String> missing = new ArrayList<>();
+        build(overrides, missing, new ArrayList<>());
+        return missing;
+    }
+
+    /**
+     * The photo's camera: the overrides where given, else the metadata, else the documented defaults. Order of
+     * precedence:
+     * <ul>
+     *   <li>position: {@value PhotoOverrides#LAT}/{@value PhotoOverrides#LON}, else EXIF GPS;</li>
+     *   <li>altitude: {@value PhotoOverrides#ALTITUDE} (standing altitude, camera
+     *       {@value PhotoOverrides#CAMERA_HEIGHT} above it, default {@link Viewpoint#DEFAULT_EYE_HEIGHT_METRES}),
+     *       else {@value PhotoOverrides#OFFSET} (on the DEM), else EXIF GPSAltitude (the camera's own altitude:
+     *       camera height default 0), else on the DEM with offset 0;</li>
+     *   <li>heading: {@value PhotoOverrides#HEADING}, else GPSImgDirection (true north as written; magnetic or
+     *       without a reference only with {@value PhotoOverrides#DECLINATION}: true = magnetic + declination;
+     *       never silently read as true), else the XMP yaw;</li>
+     *   <li>pitch and roll: the flags, else the XMP attitude; never assumed level;</li>
+     *   <li>intrinsics: a calibration, else {@value PhotoOverrides#HFOV}, else {@value PhotoOverrides#FOCAL35}, else
+     *       {@value PhotoOverrides#FOCAL}/{@value PhotoOverrides#SENSOR_WIDTH} (each flag completed by EXIF), else
+     *       EXIF FocalLengthIn35mmFilm, else EXIF FocalLength with the sensor size from the focal-plane
+     *       resolution; the overrides' distortion is applied to all but a calibration.</li>
+     * </ul>
+     *
+     * @throws PhotoMetadataException naming the file and listing everything missing with its flag, or a value
+     *                                out of range
+     */
+    public PhotoCamera resolve(PhotoOverrides overrides) {
+        List<String> missing = new ArrayList<>();
+        List<String> provenance = new ArrayList<>();
+        PhotoCamera camera = build(overrides, missing, provenance);
+        if (!missing.isEmpty()) {
+            throw new PhotoMetadataException(source + ": the photo's camera is not fully known:\n  - "
+                    + String.join("\n  - ", missing));
+        }
+        return camera;
+    }
+
+    private static boolean given(double v) {
+        return !Double.isNaN(v);
+    }
+
+    /** A number for messages: 9 significant digits, no trailing zeros. */
+    static String num(double v) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        return new java.math.BigDecimal(String.format(Locale.ROOT, "%.9g", v)).stripTrailingZeros().toPlainString();
+    }
+
+    private PhotoCamera build(PhotoOverrides o, List<String> missing, List<String> provenance) {
+        for (String p : problems) {
+            provenance.add("metadata problem: " + p);
+        }
+        // Position.
+        double lat = given(o.latDeg()) ? o.latDeg() : latDeg;
+        double lon = given(o.lonDeg()) ? o.lonDeg() : lonDeg;
+        if (!given(lat) || !given(lon)) {
+            missing.add("no GPS position in the EXIF: give " + PhotoOverrides.LAT + " and " + PhotoOverrides.LON);
+        } else {
+            provenance.add("position " + num(lat) + ", " + num(lon) + " from "
+                    + (given(o.latDeg()) && given(o.lonDeg()) ? PhotoOverrides.LAT + "/" + PhotoOverrides.LON
+                    : !given(o.latDeg()) && !given(o.lonDeg()) ? "EXIF GPSLatitude/GPSLongitude"
+                    : "the flag given and the EXIF GPS position"));
+        }
+        // Altitude.
+        double offset = 0, altitude = Double.NaN, defaultHeight = Viewpoint.DEFAULT_EYE_HEIGHT_METRES;
+        if (given(o.altitudeMetres())) {
+            altitude = o.altitudeMetres();
+            provenance.add("standing altitude " + num(altitude) + " m from " + PhotoOverrides.ALTITUDE);
+        } else if (given(o.offsetMetres())) {
+            offset = o.offsetMetres();
+            provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
+                    + " (" + PhotoOverrides.OFFSET + ")");
+        } else if (given(gpsAltitudeMetres)) {
+            altitude = gpsAltitudeMetres;
+            defaultHeight = 0;
+            provenance.add("camera altitude " + num(altitude) + " m from EXIF GPSAltitude (GPS altitudes are often"
+                    + " tens of metres off: " + PhotoOverrides.OFFSET + " 0 stands on the DEM instead)");
+        } else {
+            provenance.add("no altitude in the EXIF: standing on the DEM (" + PhotoOverrides.OFFSET + " 0)");
+        }
+        double cameraHeight = given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : defaultHeight;
+        provenance.add("camera " + num(cameraHeight) + " m above the standing altitude"
+                + (given(o.cameraHeightMetres()) ? " (" + PhotoOverrides.CAMERA_HEIGHT + ")" : " (default)"));
+        // Heading.
+        double heading = Double.NaN;
+        if (given(o.headingDeg())) {
+            heading = o.headingDeg();
+            provenance.add("heading " + num(heading) + "° from " + PhotoOverrides.HEADING);
+        } else if (given(imageDirectionDeg)) {
+            String what = "the EXIF direction (GPSImgDirection " + num(imageDirectionDeg) + "°)";
+            switch (imageDirectionReference) {
+                case TRUE -> {
+                    heading = imageDirectionDeg;
+                    provenance.add("heading " + num(heading) + "° from EXIF GPSImgDirection (true north)"
+                            + (given(o.declinationDeg()) ? "; " + PhotoOverrides.DECLINATION + " not used: the direction is true" : ""));
+                }
+                case MAGNETIC -> {
+                    if (given(o.declinationDeg())) {
+                        heading = imageDirectionDeg + o.declinationDeg();
+                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg)
+                                + "° magnetic + declination " + num(o.declinationDeg()) + "° (" + PhotoOverrides.DECLINATION + ")");
+                    } else {
+                        missing.add(what + " is magnetic (GPSImgDirectionRef M) and the declination is unknown: give "
+                                + PhotoOverrides.DECLINATION + " (east positive; true = magnetic + declination) or "
+                                + PhotoOverrides.HEADING);
+                    }
+                }
+                case NOT_GIVEN -> {
+                    if (given(o.declinationDeg())) {
+                        heading = imageDirectionDeg + o.declinationDeg();
+                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg)
+                                + "° (no reference: read as magnetic) + declination " + num(o.declinationDeg()) + "°");
+                    } else {
+                        missing.add(what + " has no reference (GPSImgDirectionRef): give " + PhotoOverrides.DECLINATION
+                                + " to read it as magnetic (0 reads it as true) or " + PhotoOverrides.HEADING);
+                    }
+                }
+                default -> throw new IllegalStateException();
+            }
+        } else if (given(xmpYawDeg)) {
+            heading = xmpYawDeg;
+            provenance.add("heading " + num(heading) + "° from XMP " + xmpAttitudeSource + " (true north)");
+        } else {
+            missing.add("no camera heading in the EXIF (GPSImgDirection) or XMP: give " + PhotoOverrides.HEADING
+                    + " (degrees clockwise from true north)");
+        }
+        // Pitch and roll.
+        double pitch = pick(o.pitchDeg(), xmpPitchDeg, "pitch", PhotoOverrides.PITCH, "0 = level, positive up",
+                missing, provenance);
+        double roll = pick(o.rollDeg(), xmpRollDeg, "roll", PhotoOverrides.ROLL,
+                "0 = level horizon, positive = camera turned clockwise", missing, provenance);
+        // Intrinsics.
+        CameraIntrinsics intrinsics = intrinsics(o, missing, provenance);
+
+        if (!missing.isEmpty()) {
+            return null;
+        }
+        try {
+            CameraOrientation orientation = new CameraOrientation(heading, pitch, roll);
+            CameraPose pose = new CameraPose(lat, lon, offset, altitude, cameraHeight, orientation);
+            return new PhotoCamera(intrinsics, pose, provenance);
+        } catch (IllegalArgumentException e) {
+            throw new PhotoMetadataException(source + ": " + e.getMessage(), e);
+        }
+    }
+
+    private double pick(double flag, double xmp, String what, String flagName, String hint, List<String> missing,
+                        List<String> provenance) {
+        if (given(flag)) {
+            provenance.add(what + " " + num(flag) + "° from " + flagName);
+            return flag;
+        }
+        if (given(xmp)) {
+            provenance.add(what + " " + num(xmp) + "° from XMP " + xmpAttitudeSource);
+            return xmp;
+        }
+        missing.add("no camera " + what + " in the metadata: give " + flagName + " (" + hint + ")");
+        return Double.NaN;
+    }
+
+    private CameraIntrinsics intrinsics(PhotoOverrides o, List<String> missing, List<String> provenance) {
+        String size = widthPx + " × " + heightPx + " px as displayed"
+                + (quarterTurn() ? " (EXIF orientation " + orientation + ": the stored image turned a quarter)" : "");
+        if (o.calibration() != null) {
+            CameraIntrinsics c = o.calibration();
+            if (c.widthPx() != widthPx || c.heightPx() != heightPx) {
+                throw new PhotoMetadataException(source + ": the calibration is for " + c.widthPx() + " × "
+                        + c.heightPx() + " px but the photo is " + size);
+            }
+            provenance.add("intrinsics from the given calibration" + (o.distortion() != null
+                    ? " (its own distortion; the separate distortion is not used)" : ""));
+            return c;
+        }
+        if (widthPx <= 0 || heightPx <= 0) {
+            missing.add("the image size could not be read from the file");
+            return null;
+        }
+        CameraIntrinsics c = null;
+        double focal = given(o.focalLengthMm()) ? o.focalLengthMm() : focalLengthMm;
+        double sensor = given(o.sensorWidthMm()) ? o.sensorWidthMm() : sensorWidthMm;
+        boolean focalFlags = given(o.focalLengthMm()) || given(o.sensorWidthMm());
+        try {
+            if (given(o.horizontalFovDeg())) {
+                c = CameraIntrinsics.fromHorizontalFov(widthPx, heightPx, o.horizontalFovDeg());
+                provenance.add("focal length " + num(c.fxPx()) + " px from " + PhotoOverrides.HFOV + " "
+                        + num(o.horizontalFovDeg()) + "°");
+            } else if (given(o.focal35mmMm())) {
+                c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, o.focal35mmMm());
+                provenance.add("focal length " + num(c.fxPx()) + " px from " + PhotoOverrides.FOCAL35 + " "
+                        + num(o.focal35mmMm()) + " mm (diagonal definition)");
+            } else if (focalFlags && given(focal) && given(sensor)) {
+                c = CameraIntrinsics.fromFocalLength(widthPx, heightPx, focal, sensor);
+                provenance.add("focal length " + num(c.fxPx()) + " px from " + num(focal) + " mm ("
+                        + (given(o.focalLengthMm()) ? PhotoOverrides.FOCAL : "EXIF FocalLength") + ") on a "
+                        + num(sensor) + " mm sensor (" + (given(o.sensorWidthMm()) ? PhotoOverrides.SENSOR_WIDTH
+                        : "EXIF FocalPlaneXResolution") + ")");
+            } else if (focalFlags && given(focal)) {
+                missing.add(PhotoOverrides.FOCAL + " needs " + PhotoOverrides.SENSOR_WIDTH
+                        + " (the sensor's long side, mm), which the EXIF does not give; or give "
+                        + PhotoOverrides.FOCAL35 + " or " + PhotoOverrides.HFOV);
+            } else if (focalFlags) {
+                missing.add(PhotoOverrides.SENSOR_WIDTH + " needs a focal length and the EXIF has none: give "
+                        + PhotoOverrides.FOCAL);
+            } else if (given(focal35mmMm)) {
+                c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35mmMm);
+                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLengthIn35mmFilm " + num(focal35mmMm)
+                        + " mm (diagonal definition; whole millimetres, so uncertain by ±"
+                        + num(50 / focal35mmMm) + " %: " + PhotoOverrides.HFOV + " or a calibration is better)");
+            } else if (given(focalLengthMm) && given(sensorWidthMm)) {
+                c = CameraIntrinsics.fromFocalLength(widthPx, heightPx, focalLengthMm, sensorWidthMm);
+                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLength " + num(focalLengthMm)
+                        + " mm on a " + num(sensorWidthMm) + " mm sensor (EXIF FocalPlaneX/YResolution)");
+            } else if (given(focalLengthMm)) {
+                missing.add("the EXIF gives the focal length (" + num(focalLengthMm) + " mm) but neither a 35 mm"
+                        + " equivalent nor the sensor size: give " + PhotoOverrides.SENSOR_WIDTH
+                        + " (the sensor's long side), " + PhotoOverrides.FOCAL35 + " or " + PhotoOverrides.HFOV);
+            } else {
+                missing.add("no focal length in the EXIF: give " + PhotoOverrides.FOCAL + " with "
+                        + PhotoOverrides.SENSOR_WIDTH + ", " + PhotoOverrides.FOCAL35 + " or " + PhotoOverrides.HFOV);
+            }
+        } catch (IllegalArgumentException e) {
+            throw new PhotoMetadataException(source + ": " + e.getMessage(), e);
+        }
+        if (c != null) {
+            provenance.add("image " + size);
+            if (o.distortion() != null) {
+                c = c.withDistortion(o.distortion());
+                provenance.add("lens distortion " + o.distortion());
+            }
+        }
+        return c;
+    }
+}
