@@ -125,6 +125,96 @@ public record CameraIntrinsics(int widthPx, int heightPx, double fxPx, double fy
         return pinhole(widthPx, heightPx, widthPx / 2.0 / Math.tan(Math.toRadians(horizontalFovDeg) / 2));
     }
 
+    /**
+     * From OpenCV's arrays as {@code cv::calibrateCamera} returns them.
+     *
+     * @param cameraMatrix the 3 × 3 camera matrix, row-major: [fx, 0, cx, 0, fy, cy, 0, 0, 1]
+     * @param distCoeffs   (k1, k2, p1, p2[, k3[, k4, k5, k6[, s1, s2, s3, s4[, τx, τy]]]]): 4 or 5 values, or
+     *                     more when every one after k3 is zero (the terms this model does not have)
+     * @throws IllegalArgumentException for a matrix with skew or a wrong last row, or non-zero terms beyond k3
+     */
+    public static CameraIntrinsics fromOpenCv(int widthPx, int heightPx, double[] cameraMatrix, double[] distCoeffs) {
+        if (cameraMatrix == null || cameraMatrix.length != 9 || cameraMatrix[1] != 0 || cameraMatrix[3] != 0
+                || cameraMatrix[6] != 0 || cameraMatrix[7] != 0 || cameraMatrix[8] != 1) {
+            throw new IllegalArgumentException("the camera matrix must be [fx, 0, cx, 0, fy, cy, 0, 0, 1] (row-major,"
+                    + " no skew), got " + java.util.Arrays.toString(cameraMatrix));
+        }
+        if (distCoeffs == null || distCoeffs.length < 4) {
+            throw new IllegalArgumentException("distortion needs at least k1, k2, p1, p2, got "
+                    + java.util.Arrays.toString(distCoeffs));
+        }
+        for (int i = 5; i < distCoeffs.length; i++) {
+            if (distCoeffs[i] != 0) {
+                throw new IllegalArgumentException("distortion coefficient " + (i + 1) + " (beyond k3: rational,"
+                        + " thin-prism or tilt terms) is " + distCoeffs[i] + ": only k1, k2, p1, p2, k3 are supported;"
+                        + " calibrate without CALIB_RATIONAL_MODEL, CALIB_THIN_PRISM_MODEL and CALIB_TILTED_MODEL");
+            }
+        }
+        return new CameraIntrinsics(widthPx, heightPx, cameraMatrix[0], cameraMatrix[4], cameraMatrix[2],
+                cameraMatrix[5], new LensDistortion(distCoeffs[0], distCoeffs[1], distCoeffs[2], distCoeffs[3],
+                distCoeffs.length > 4 ? distCoeffs[4] : 0));
+    }
+
+    /**
+     * This camera, calibrated on the stored frames, for the image as displayed under an EXIF orientation: what a
+     * calibration of a camera that writes orientation tags becomes for {@link PhotoMetadata}'s displayed pixels.
+     * The stored pixel (u, v) of a W × H frame is displayed at
+     *
+     * <table>
+     *   <caption>EXIF orientation</caption>
+     *   <tr><th>tag</th><th>meaning</th><th>displayed pixel</th><th>displayed size</th></tr>
+     *   <tr><td>1</td><td>as stored</td><td>(u, v)</td><td>W × H</td></tr>
+     *   <tr><td>2</td><td>mirrored left-right</td><td>(W−1−u, v)</td><td>W × H</td></tr>
+     *   <tr><td>3</td><td>turned 180°</td><td>(W−1−u, H−1−v)</td><td>W × H</td></tr>
+     *   <tr><td>4</td><td>mirrored top-bottom</td><td>(u, H−1−v)</td><td>W × H</td></tr>
+     *   <tr><td>5</td><td>transposed</td><td>(v, u)</td><td>H × W</td></tr>
+     *   <tr><td>6</td><td>turned 90° clockwise</td><td>(H−1−v, u)</td><td>H × W</td></tr>
+     *   <tr><td>7</td><td>transversed</td><td>(H−1−v, W−1−u)</td><td>H × W</td></tr>
+     *   <tr><td>8</td><td>turned 90° counter-clockwise</td><td>(v, W−1−u)</td><td>H × W</td></tr>
+     * </table>
+     *
+     * The result sees the same rays at the corresponding pixels up to a rotation or reflection of the camera frame
+     * about its axis (absorbed by the displayed image's own roll): focal lengths swap for 5–8, the principal point
+     * moves with its pixel, radial coefficients stay and the tangential pair (p2, p1) turns with the image (it is
+     * a vector: the tangential term is r²·q + 2·(q·v)·v with q = (p2, p1), v = (x, y)).
+     *
+     * @param exifOrientation 1–8; 0 (no tag) is taken as 1
+     */
+    public CameraIntrinsics displayed(int exifOrientation) {
+        // (x', y') = A·(x, y) on normalized coordinates: a signed permutation {a, b, c, d} = [[a, b], [c, d]].
+        int[] a = switch (exifOrientation) {
+            case 0, 1 -> new int[] {1, 0, 0, 1};
+            case 2 -> new int[] {-1, 0, 0, 1};
+            case 3 -> new int[] {-1, 0, 0, -1};
+            case 4 -> new int[] {1, 0, 0, -1};
+            case 5 -> new int[] {0, 1, 1, 0};
+            case 6 -> new int[] {0, -1, 1, 0};
+            case 7 -> new int[] {0, -1, -1, 0};
+            case 8 -> new int[] {0, 1, -1, 0};
+            default -> throw new IllegalArgumentException("EXIF orientation must be 1–8, got " + exifOrientation);
+        };
+        boolean swap = a[0] == 0;
+        int w = swap ? heightPx : widthPx, h = swap ? widthPx : heightPx;
+        double fx = swap ? fyPx : fxPx, fy = swap ? fxPx : fyPx;
+        double[] q = {distortion.p2(), distortion.p1()};
+        double q0 = a[0] * q[0] + a[1] * q[1], q1 = a[2] * q[0] + a[3] * q[1];
+        // The displayed principal point is the pixel map (table above) applied to the stored one.
+        double cx = switch (exifOrientation) {
+            case 0, 1, 4 -> cxPx;
+            case 2, 3 -> widthPx - 1 - cxPx;
+            case 5, 8 -> cyPx;
+            default -> heightPx - 1 - cyPx; // 6, 7
+        };
+        double cy = switch (exifOrientation) {
+            case 0, 1, 2 -> cyPx;
+            case 3, 4 -> heightPx - 1 - cyPx;
+            case 5, 6 -> cxPx;
+            default -> widthPx - 1 - cxPx; // 7, 8
+        };
+        return new CameraIntrinsics(w, h, fx, fy, cx, cy,
+                new LensDistortion(distortion.k1(), distortion.k2(), q1, q0, distortion.k3()));
+    }
+
     /** The same camera with another lens distortion. */
     public CameraIntrinsics withDistortion(LensDistortion d) {
         return new CameraIntrinsics(widthPx, heightPx, fxPx, fyPx, cxPx, cyPx, d);

@@ -466,7 +466,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             CameraIntrinsics c = o.calibration();
             if (c.widthPx() != widthPx || c.heightPx() != heightPx) {
                 throw new PhotoMetadataException(source + ": the calibration is for " + c.widthPx() + " × "
-                        + c.heightPx() + " px but the photo is " + size);
+                        + c.heightPx() + " px but the photo is " + size
+                        + (quarterTurn() && c.widthPx() == heightPx && c.heightPx() == widthPx
+                        ? ": a calibration of the stored frames must be turned (CameraIntrinsics.displayed("
+                        + orientation + "))" : ""));
             }
             provenance.add("intrinsics from the given calibration" + (o.distortion() != null
                     ? " (its own distortion; the separate distortion is not used)" : ""));

@@ -266,6 +266,93 @@ class CameraModelTest {
         assertFalse(PHONE.contains(3999.5, 0));
     }
 
+    /** The EXIF orientation pixel map, written from the EXIF standard's descriptions. */
+    static double[] displayedPixel(int orientation, double u, double v, int w, int h) {
+        return switch (orientation) {
+            case 1 -> new double[] {u, v};
+            case 2 -> new double[] {w - 1 - u, v};
+            case 3 -> new double[] {w - 1 - u, h - 1 - v};
+            case 4 -> new double[] {u, h - 1 - v};
+            case 5 -> new double[] {v, u};
+            case 6 -> new double[] {h - 1 - v, u};
+            case 7 -> new double[] {h - 1 - v, w - 1 - u};
+            case 8 -> new double[] {v, w - 1 - u};
+            default -> throw new IllegalArgumentException();
+        };
+    }
+
+    @Test
+    void aStoredFrameCalibrationTurnsWithTheExifOrientation() {
+        // Orientation 6 (turned clockwise) of a pinhole: the stored top-left pixel is displayed top-right.
+        CameraIntrinsics stored = new CameraIntrinsics(400, 300, 350, 360, 210.5, 140.25, LensDistortion.NONE);
+        CameraIntrinsics six = stored.displayed(6);
+        assertEquals(300, six.widthPx());
+        assertEquals(400, six.heightPx());
+        assertEquals(360, six.fxPx());
+        assertEquals(350, six.fyPx());
+        assertEquals(299 - 140.25, six.cxPx());
+        assertEquals(210.5, six.cyPx());
+        // For every orientation, rays at corresponding pixels keep their angles to each other (the displayed
+        // camera is the stored one turned or mirrored about its axis), with a distortion that has tangential terms.
+        Random rnd = new Random(6);
+        for (int o = 1; o <= 8; o++) {
+            CameraIntrinsics d = PHONE.displayed(o);
+            double[] pp = displayedPixel(o, PHONE.cxPx(), PHONE.cyPx(), 4000, 3000);
+            assertEquals(pp[0], d.cxPx(), 1e-9, "orientation " + o);
+            assertEquals(pp[1], d.cyPx(), 1e-9, "orientation " + o);
+            for (int k = 0; k < 200; k++) {
+                double u1 = rnd.nextDouble() * 4000 - 0.5, v1 = rnd.nextDouble() * 3000 - 0.5;
+                double u2 = rnd.nextDouble() * 4000 - 0.5, v2 = rnd.nextDouble() * 3000 - 0.5;
+                double[] q1 = displayedPixel(o, u1, v1, 4000, 3000), q2 = displayedPixel(o, u2, v2, 4000, 3000);
+                double stored12 = CameraIntrinsics.angleDeg(PHONE.rayOf(u1, v1), PHONE.rayOf(u2, v2));
+                double shown12 = CameraIntrinsics.angleDeg(d.rayOf(q1[0], q1[1]), d.rayOf(q2[0], q2[1]));
+                assertEquals(stored12, shown12, 1e-10, "orientation " + o);
+                double axis1 = CameraIntrinsics.angleDeg(PHONE.rayOf(u1, v1), new double[] {0, 0, 1});
+                assertEquals(axis1, CameraIntrinsics.angleDeg(d.rayOf(q1[0], q1[1]), new double[] {0, 0, 1}), 1e-10);
+            }
+        }
+        assertThrows(IllegalArgumentException.class, () -> PHONE.displayed(9));
+    }
+
+    @Test
+    void openCvArraysAreTakenAsTheyAre() {
+        CameraIntrinsics c = CameraIntrinsics.fromOpenCv(4000, 3000, new double[] {3100, 0, 2010.3, 0, 3105, 1490.8, 0, 0, 1},
+                new double[] {-0.12, 0.08, 0.0011, -0.0007, -0.02});
+        assertEquals(PHONE, c);
+        assertEquals(0, CameraIntrinsics.fromOpenCv(10, 10, new double[] {5, 0, 4.5, 0, 5, 4.5, 0, 0, 1},
+                new double[] {0.1, 0, 0, 0}).distortion().k3());
+        assertEquals(PHONE, CameraIntrinsics.fromOpenCv(4000, 3000, new double[] {3100, 0, 2010.3, 0, 3105, 1490.8, 0, 0, 1},
+                new double[] {-0.12, 0.08, 0.0011, -0.0007, -0.02, 0, 0, 0}));
+        assertThrows(IllegalArgumentException.class, () -> CameraIntrinsics.fromOpenCv(10, 10,
+                new double[] {5, 0, 4.5, 0, 5, 4.5, 0, 0, 1}, new double[] {0.1, 0, 0, 0, 0, 0.3, 0, 0}), "k4");
+        assertThrows(IllegalArgumentException.class, () -> CameraIntrinsics.fromOpenCv(10, 10,
+                new double[] {5, 0.2, 4.5, 0, 5, 4.5, 0, 0, 1}, new double[] {0, 0, 0, 0}), "skew");
+    }
+
+    @Test
+    void undistortionConvergesUpToTheFold() {
+        // Rays in every direction out to 99.9 % of the valid radius: each has a pixel, and that pixel's ray is it.
+        for (CameraIntrinsics cam : new CameraIntrinsics[] {BARREL, WIDE}) {
+            double rMax = cam.distortion().maxValidRadius();
+            int checked = 0;
+            for (double f : new double[] {0.01, 0.3, 0.7, 0.9, 0.99, 0.999}) {
+                for (int k = 0; k < 72; k++) {
+                    double a = Math.toRadians(5 * k);
+                    double x = f * rMax * Math.cos(a), y = f * rMax * Math.sin(a);
+                    if (!cam.distortion().isValid(x, y)) {
+                        continue; // tangential terms fold the map slightly inside the radial bound
+                    }
+                    double[] p = cam.pixelOf(x, y, 1);
+                    double[] ray = cam.rayOf(p[0], p[1]);
+                    assertTrue(CameraIntrinsics.angleDeg(unit(x, y, 1), ray) < 1e-8,
+                            "at " + f + " of the valid radius, " + 5 * k + "°: " + CameraIntrinsics.angleDeg(unit(x, y, 1), ray));
+                    checked++;
+                }
+            }
+            assertTrue(checked > 400, checked + " rays checked");
+        }
+    }
+
     @Test
     void constructorRejectsImpossibleCameras() {
         assertThrows(IllegalArgumentException.class, () -> CameraIntrinsics.pinhole(0, 10, 5));
