@@ -44,9 +44,11 @@ public final class CameraView implements TargetImage {
 
     @Override
     public void pixelOf(double east, double north, double up, double[] out) {
-        double[] c = new double[3];
-        CameraOrientation.enuToCamera(cameraToEnu, east, north, up, c);
-        intrinsics.pixelOf(c[0], c[1], c[2], out);
+        double[] m = cameraToEnu; // transpose: ENU → camera
+        double x = m[0] * east + m[3] * north + m[6] * up;
+        double y = m[1] * east + m[4] * north + m[7] * up;
+        double z = m[2] * east + m[5] * north + m[8] * up;
+        intrinsics.pixelOf(x, y, z, out);
     }
 
     @Override

@@ -110,30 +110,34 @@ public record LensDistortion(double k1, double k2, double p1, double p2, double 
         // every critical point inside.
         double a = 21 * k3, b = 10 * k2, c = 3 * k1;
         if (a == 0) {
-            if (b != 0) {
-                double root = -c / b;
-                if (root > 0 && root < s && !(radialSlope(root) > 0)) {
-                    return false;
-                }
+            if (b != 0 && !positiveAtCriticalPoint(-c / b, s)) {
+                return false;
             }
         } else {
             double disc = b * b - 4 * a * c;
             if (disc >= 0) {
-                double sq = Math.sqrt(disc);
                 // Numerically stable roots of a·t² + b·t + c.
-                double q = -0.5 * (b + Math.copySign(sq, b));
+                double q = -0.5 * (b + Math.copySign(Math.sqrt(disc), b));
                 double r1 = q / a;
                 double r2 = q != 0 ? c / q : r1;
-                for (double root : new double[] {r1, r2}) {
-                    if (root > 0 && root < s && !(radialSlope(root) > 0)) {
-                        return false;
-                    }
+                if (!positiveAtCriticalPoint(r1, s) || !positiveAtCriticalPoint(r2, s)) {
+                    return false;
                 }
             }
         }
-        double[] j = new double[4];
-        jacobian(x, y, j);
-        return j[0] * j[3] - j[1] * j[2] > 0;
+        // Jacobian determinant (see jacobian), inline: this runs for every projected ray.
+        double r2 = s;
+        double radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3));
+        double dRadialDr2 = k1 + r2 * (2 * k2 + 3 * k3 * r2);
+        double j00 = radial + 2 * x * x * dRadialDr2 + 2 * p1 * y + 6 * p2 * x;
+        double j01 = 2 * x * y * dRadialDr2 + 2 * p1 * x + 2 * p2 * y;
+        double j11 = radial + 2 * y * y * dRadialDr2 + 6 * p1 * y + 2 * p2 * x;
+        return j00 * j11 - j01 * j01 > 0;
+    }
+
+    /** False when a critical point of g lies inside (0, s) and g is not positive there. */
+    private boolean positiveAtCriticalPoint(double root, double s) {
+        return !(root > 0 && root < s) || radialSlope(root) > 0;
     }
 
     /**

@@ -354,6 +354,24 @@ class CameraModelTest {
     }
 
     @Test
+    void jacobianMatchesCentralDifferences() {
+        LensDistortion d = PHONE.distortion();
+        double[] j = new double[4], plus = new double[2], minus = new double[2];
+        double h = 1e-6;
+        for (double[] p : new double[][] {{0.3, -0.2}, {-0.55, 0.41}, {0.01, 0.6}}) {
+            d.jacobian(p[0], p[1], j);
+            d.distort(p[0] + h, p[1], plus);
+            d.distort(p[0] - h, p[1], minus);
+            assertEquals((plus[0] - minus[0]) / (2 * h), j[0], 1e-8);
+            assertEquals((plus[1] - minus[1]) / (2 * h), j[2], 1e-8);
+            d.distort(p[0], p[1] + h, plus);
+            d.distort(p[0], p[1] - h, minus);
+            assertEquals((plus[0] - minus[0]) / (2 * h), j[1], 1e-8);
+            assertEquals((plus[1] - minus[1]) / (2 * h), j[3], 1e-8);
+        }
+    }
+
+    @Test
     void constructorRejectsImpossibleCameras() {
         assertThrows(IllegalArgumentException.class, () -> CameraIntrinsics.pinhole(0, 10, 5));
         assertThrows(IllegalArgumentException.class, () -> CameraIntrinsics.pinhole(10, 10, -5));
