@@ -319,52 +319,78 @@ public record CameraIntrinsics(int widthPx, int heightPx, double fxPx, double fy
 
     /**
      * Newton's method for the normalized undistorted point whose distortion is (xd, yd); null when none is found
-     * in the valid domain.
+     * in the valid domain. A fast pass keeps the iterates where the radial map still increases (g &gt; 0, a
+     * necessary condition) and checks the full domain once at the end; should that fail (coefficients whose g
+     * dips below zero and recovers, so an iterate could jump over the fold), a careful pass checks every iterate.
      */
     private double[] undistort(double xd, double yd) {
         if (!Double.isFinite(xd) || !Double.isFinite(yd)) {
             return null;
         }
+        double[] fast = newton(xd, yd, false);
+        if (fast != null && distortion.isValid(fast[0], fast[1])) {
+            return fast;
+        }
+        return newton(xd, yd, true);
+    }
+
+    private boolean inDomain(double x, double y, boolean full) {
+        if (full) {
+            return distortion.isValid(x, y);
+        }
         LensDistortion d = distortion;
-        double toPx = Math.max(fxPx, fyPx);
+        double s = x * x + y * y;
+        return 1 + s * (3 * d.k1() + s * (5 * d.k2() + s * 7 * d.k3())) > 0;
+    }
+
+    private double[] newton(double xd, double yd, boolean full) {
+        LensDistortion d = distortion;
+        double k1 = d.k1(), k2 = d.k2(), k3 = d.k3(), p1 = d.p1(), p2 = d.p2();
+        double tolerance = UNDISTORT_TOLERANCE_PX / Math.max(fxPx, fyPx);
         double x = xd, y = yd;
-        // Start inside the valid domain: pull the start toward the centre until it is.
-        for (int i = 0; i < 60 && !d.isValid(x, y); i++) {
+        // Start inside the domain: pull the start toward the centre until it is.
+        for (int i = 0; i < 60 && !inDomain(x, y, full); i++) {
             x *= 0.5;
             y *= 0.5;
         }
-        if (!d.isValid(x, y)) {
+        if (!inDomain(x, y, full)) {
             return null;
         }
-        double[] f = new double[2];
-        double[] j = new double[4];
-        d.distort(x, y, f);
-        double rx = f[0] - xd, ry = f[1] - yd;
-        double res = Math.hypot(rx, ry);
-        for (int it = 0; it < UNDISTORT_MAX_ITERATIONS; it++) {
-            if (res * toPx <= UNDISTORT_TOLERANCE_PX) {
-                return new double[] {x, y};
-            }
-            d.jacobian(x, y, j);
-            double det = j[0] * j[3] - j[1] * j[2];
+        double r2 = x * x + y * y;
+        double radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3));
+        double rx = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x) - xd;
+        double ry = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y - yd;
+        // Squared residuals (Math.hypot is slow and the comparisons need no root).
+        double tolerance2 = tolerance * tolerance;
+        double res = rx * rx + ry * ry;
+        for (int it = 0; it < UNDISTORT_MAX_ITERATIONS && res > tolerance2; it++) {
+            double dR = k1 + r2 * (2 * k2 + 3 * k3 * r2);
+            double j00 = radial + 2 * x * x * dR + 2 * p1 * y + 6 * p2 * x;
+            double j01 = 2 * x * y * dR + 2 * p1 * x + 2 * p2 * y; // = j10: the Jacobian is symmetric
+            double j11 = radial + 2 * y * y * dR + 6 * p1 * y + 2 * p2 * x;
+            double det = j00 * j11 - j01 * j01;
             if (!(Math.abs(det) > 0)) {
                 return null;
             }
-            double sx = (j[3] * rx - j[1] * ry) / det;
-            double sy = (-j[2] * rx + j[0] * ry) / det;
+            double sx = (j11 * rx - j01 * ry) / det;
+            double sy = (-j01 * rx + j00 * ry) / det;
             double lambda = 1;
             boolean moved = false;
             for (int h = 0; h < 60; h++, lambda *= 0.5) {
                 double nx = x - lambda * sx, ny = y - lambda * sy;
-                if (!d.isValid(nx, ny)) {
+                if (!inDomain(nx, ny, full)) {
                     continue;
                 }
-                d.distort(nx, ny, f);
-                double nrx = f[0] - xd, nry = f[1] - yd;
-                double nres = Math.hypot(nrx, nry);
+                double nr2 = nx * nx + ny * ny;
+                double nradial = 1 + nr2 * (k1 + nr2 * (k2 + nr2 * k3));
+                double nrx = nx * nradial + 2 * p1 * nx * ny + p2 * (nr2 + 2 * nx * nx) - xd;
+                double nry = ny * nradial + p1 * (nr2 + 2 * ny * ny) + 2 * p2 * nx * ny - yd;
+                double nres = nrx * nrx + nry * nry;
                 if (nres < res) {
                     x = nx;
                     y = ny;
+                    r2 = nr2;
+                    radial = nradial;
                     rx = nrx;
                     ry = nry;
                     res = nres;
@@ -373,11 +399,11 @@ public record CameraIntrinsics(int widthPx, int heightPx, double fxPx, double fy
                 }
             }
             if (!moved) {
-                // No step inside the domain reduces the residual: the pixel lies beyond the fold, or the
-                // residual is at rounding level already.
-                return res * toPx <= UNDISTORT_TOLERANCE_PX ? new double[] {x, y} : null;
+                // No step inside the domain reduces the residual: the pixel lies beyond the fold (or the residual
+                // is at rounding level, which the test below accepts).
+                break;
             }
         }
-        return res * toPx <= UNDISTORT_TOLERANCE_PX ? new double[] {x, y} : null;
+        return res <= tolerance2 ? new double[] {x, y} : null;
     }
 }
