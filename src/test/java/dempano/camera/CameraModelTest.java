@@ -332,7 +332,17 @@ class CameraModelTest {
     @Test
     void undistortionConvergesUpToTheFold() {
         // Rays in every direction out to 99.9 % of the valid radius: each has a pixel, and that pixel's ray is it.
-        for (CameraIntrinsics cam : new CameraIntrinsics[] {BARREL, WIDE}) {
+        // DIP's g = 1 − 3s + 1.5s² is negative only for s in (0.423, 1.577): beyond the band the radial map rises
+        // again, so Newton may jump over the fold into it; the domain check must bring it back.
+        CameraIntrinsics dip = BARREL.withDistortion(LensDistortion.radial(-1, 0.3, 0));
+        // Distorted radius 0.3 has preimages inside (r ≈ 0.33) and beyond the fold: the inside one is the ray.
+        double[] inside = dip.rayOf(499.5 + 500 * 0.3, 399.5);
+        double ri = inside[0] / inside[2];
+        assertEquals(0.3, ri * (1 - ri * ri + 0.3 * ri * ri * ri * ri), 1e-12);
+        assertTrue(ri < dip.distortion().maxValidRadius(), "radius " + ri);
+        // Distorted radius 0.5 exceeds the most the inner branch makes (≈ 0.41): only the folded branch reaches it.
+        assertTrue(Double.isNaN(dip.rayOf(499.5 + 500 * 0.5, 399.5)[0]));
+        for (CameraIntrinsics cam : new CameraIntrinsics[] {BARREL, WIDE, dip}) {
             double rMax = cam.distortion().maxValidRadius();
             int checked = 0;
             for (double f : new double[] {0.01, 0.3, 0.7, 0.9, 0.99, 0.999}) {
