@@ -28,10 +28,13 @@ package dempano.camera;
  * <h2>Inverse (undistortion)</h2>
  * {@link #rayOf} inverts the distortion with Newton's method (analytic Jacobian, started at the distorted
  * point, steps halved until they stay in the valid domain and reduce the residual), stopping when the
- * re-projected point is within {@link #UNDISTORT_TOLERANCE_PX} of the pixel. It converges for every pixel that
- * is the image of a point in the distortion's valid domain (see {@link LensDistortion}: there the radial map is
- * strictly increasing, so the inverse is unique); other pixels (beyond the fold of a strong barrel polynomial)
- * have no ray and give NaN. With zero distortion it is the closed form ((px − cx)/fx, (py − cy)/fy, 1).
+ * re-projected point is within {@link #UNDISTORT_TOLERANCE_PX} of the pixel (at most
+ * {@link #UNDISTORT_MAX_ITERATIONS} steps). It converges for every pixel that is the image of a point in the
+ * distortion's valid domain (see {@link LensDistortion}: there the radial map is strictly increasing, so the
+ * inverse is unique; tested out to 99.9 % of the valid radius); other pixels (beyond the fold of a strong barrel
+ * polynomial) have no ray and give NaN. OpenCV's {@code undistortPoints} instead runs a fixed number of
+ * fixed-point steps (5 by default) and returns whatever it reached, also beyond the fold. With zero distortion
+ * {@link #rayOf} is the closed form ((px − cx)/fx, (py − cy)/fy, 1), normalized.
  *
  * @param widthPx    image width as displayed, pixels (≥ 1)
  * @param heightPx   image height as displayed, pixels (≥ 1)
