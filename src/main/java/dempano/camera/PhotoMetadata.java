@@ -81,7 +81,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         if (imageDirectionReference == null) {
             imageDirectionReference = DirectionReference.NOT_GIVEN;
         }
-        problems = List.copyOf(problems);
+        problems = problems == null ? List.of() : List.copyOf(problems);
     }
 
     /**
@@ -509,7 +509,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35mmMm);
                 provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLengthIn35mmFilm " + num(focal35mmMm)
                         + " mm (diagonal definition; whole millimetres, so uncertain by ±"
-                        + num(50 / focal35mmMm) + " %: " + PhotoOverrides.HFOV + " or a calibration is better)");
+                        + String.format(Locale.ROOT, "%.1f", 50 / focal35mmMm) + " %: " + PhotoOverrides.HFOV + " or a calibration is better)");
             } else if (given(focalLengthMm) && given(sensorWidthMm)) {
                 c = CameraIntrinsics.fromFocalLength(widthPx, heightPx, focalLengthMm, sensorWidthMm);
                 provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLength " + num(focalLengthMm)
