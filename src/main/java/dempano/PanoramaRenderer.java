@@ -17,7 +17,11 @@ import dempano.panorama.Stitcher;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
 import dempano.render.OffscreenRenderer;
+import dempano.panorama.SeenTriangles;
+import dempano.reference.TerrainRayProbe;
 import dempano.terrain.DeviationCache;
+import dempano.terrain.EyePlacement;
+import dempano.terrain.SeenTriangleResolver;
 import dempano.terrain.MeshCache;
 import dempano.terrain.TerrainBuilder;
 import java.util.ArrayList;
@@ -129,6 +133,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
         ViewCapture[] captures;
+        SeenTriangles seen = null;
         long triangles;
         // The mesh cache's geometries can be in one scene at a time, so it is held from building to
         // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
@@ -141,10 +146,19 @@ public final class PanoramaRenderer implements AutoCloseable {
             progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                     + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
             long[] drawAndRead = new long[2];
+            long resolveNanos = 0;
             try {
                 // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
-                captures = gl.render(terrain.root(), layout, req.depthMode(), near, far, false, req.colour(),
-                        req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), drawAndRead);
+                captures = gl.render(terrain.root(), new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far,
+                        req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), req.distance(), false),
+                        drawAndRead);
+                if (req.distance()) {
+                    // While the geometries' buffers live: the triangles seen, in double precision.
+                    long beforeResolve = System.nanoTime();
+                    seen = SeenTriangleResolver.resolve(terrain.drawn(), captures, new EyePlacement(eye, req.refraction()),
+                            req.rangeMetres());
+                    resolveNanos = System.nanoTime() - beforeResolve;
+                }
             } finally {
                 terrain.root().detachAllChildren();
                 List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
@@ -153,9 +167,12 @@ public final class PanoramaRenderer implements AutoCloseable {
             }
             long afterRender = System.nanoTime();
             // "render" splits into drawing and reading back; what remains (scene upload, culling, release) is "upload".
-            timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1]) / 1e6);
+            timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1] - resolveNanos) / 1e6);
             timings.put("draw", drawAndRead[0] / 1e6);
             timings.put("readback", drawAndRead[1] / 1e6);
+            if (req.distance()) {
+                timings.put("triangles", resolveNanos / 1e6);
+            }
             t = afterRender;
         } finally {
             if (withMeshCache) {
@@ -166,12 +183,18 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("stitching");
         int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
         float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
+        Stitcher.Result exactness = null;
         if (req.distance()) {
             float[][] inverseEyeDepth = new float[captures.length][];
             for (int k = 0; k < captures.length; k++) {
                 inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
             }
-            Stitcher.stitch(geometry, layout, captures, inverseEyeDepth, argb, distance);
+            Stitcher.Result stitched = Stitcher.stitch(geometry, layout, captures, inverseEyeDepth,
+                    new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())),
+                    argb, distance);
+            exactness = stitched;
+            progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
+                    + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
         } else {
             Stitcher.stitchColour(geometry, layout, captures, argb, distance);
         }

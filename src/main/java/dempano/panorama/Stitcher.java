@@ -4,9 +4,19 @@ import java.util.stream.IntStream;
 
 /**
  * Resamples perspective views into the equirectangular panorama. Colour is interpolated
- * bilinearly; distance is interpolated only between samples of one surface (inverse eye depth,
- * which is affine across a planar triangle, so exact there) and otherwise taken from the nearest
- * sample, so no distance is ever a blend of a ridge and what lies behind it.
+ * bilinearly.
+ *
+ * <p>Distance, where the views say which triangle each sample saw ({@link SeenTriangles}): every
+ * pixel's own centre ray is intersected, in double precision, with the triangles seen at the 4×4
+ * view samples around it, and the nearest hit is the pixel's distance. No neighbour's ray and no
+ * blend: exact on the drawn surface at any incidence, and a silhouette (ridge, far terrain or sky)
+ * is decided per pixel centre. A ray that meets none of them is sky where sky is seen among the
+ * central 2×2 samples; elsewhere (a triangle too small to be sampled) the inverse-depth rule below
+ * is the fallback, counted in {@link Result#fallbackPixels()}.
+ *
+ * <p>Without triangles: distance is interpolated only between samples of one surface (inverse eye
+ * depth, which is affine across a planar triangle, so exact there) and otherwise taken from the
+ * nearest sample, so no distance is ever a blend of a ridge and what lies behind it.
  */
 public final class Stitcher {
     /** Neighbouring samples within this depth ratio are taken as one surface. */
@@ -47,15 +57,39 @@ public final class Stitcher {
     }
 
     /**
+     * How the distances were found.
+     *
+     * @param exactPixels    pixels whose distance (or sky) came from their own ray against the triangles seen
+     * @param probedPixels   pixels whose ray met none of the triangles seen around it: the terrain was
+     *                       searched along it ({@link RayProbe})
+     * @param fallbackPixels pixels whose ray met none of the triangles seen around them, with no sky
+     *                       beside them and no probe: the inverse-depth rule gave their distance
+     */
+    public record Result(long exactPixels, long probedPixels, long fallbackPixels) {
+    }
+
+    /**
      * Builds colour and distance for every panorama pixel.
      *
      * @param inverseEyeDepth per view, from {@link #inverseEyeDepths}
+     * @param exact    the triangles the views saw and the terrain to probe where they fail (exact
+     *                 per-pixel rays), or null for the inverse-depth rule everywhere
      * @param argbOut  receives colour, row-major, row 0 at the top; null to skip colour
      * @param rangeOut receives straight-line distance in metres, +∞ for sky
      */
-    public static void stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
-                              int[] argbOut, float[] rangeOut) {
-        resample(g, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), argbOut, rangeOut);
+    public static Result stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+                                Exact exact, int[] argbOut, float[] rangeOut) {
+        return resample(g, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), exact, argbOut, rangeOut);
+    }
+
+    /**
+     * What exact per-pixel distances need.
+     *
+     * @param seen  the triangles the views saw
+     * @param probe the terrain, searched along a pixel's ray where none of the triangles seen around
+     *              it is met; null = sky where sky is seen beside it, else the inverse-depth rule
+     */
+    public record Exact(SeenTriangles seen, RayProbe probe) {
     }
 
     /**
@@ -68,19 +102,24 @@ public final class Stitcher {
      */
     public static void stitchColour(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, int[] argbOut,
                                     float[] nearestRangeOut) {
-        resample(g, layout, captures, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
+        resample(g, layout, captures, null, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
     }
 
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
-    private static void resample(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
-                                 int[] argbOut, float[] rangeOut) {
+    private static Result resample(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+                                   Exact exact, int[] argbOut, float[] rangeOut) {
+        SeenTriangles seen = exact == null ? null : exact.seen();
+        RayProbe probe = exact == null ? null : exact.probe();
         int width = g.widthPx();
         // Per column: its view, x in the view, and the secant of its angle off the view's axis;
         // a row's y in a view is then tan(elevation)·secant (see ViewLayout.project).
         int[] viewOfCol = new int[width];
         double[] pxOfCol = new double[width], xTanOfCol = new double[width], secOfCol = new double[width];
+        double[] sinAz = new double[width], cosAz = new double[width];
         for (int col = 0; col < width; col++) {
             double az = g.azimuthOfColumn(col);
+            sinAz[col] = Math.sin(Math.toRadians(az));
+            cosAz[col] = Math.cos(Math.toRadians(az));
             viewOfCol[col] = layout.viewOf(az);
             double[] q = layout.project(viewOfCol[col], az, 0);
             pxOfCol[col] = q[0];
@@ -88,10 +127,17 @@ public final class Stitcher {
             secOfCol[col] = Math.sqrt(1 + q[2] * q[2]);
         }
         double yScale = layout.heightPx() / (layout.topTan() - layout.bottomTan());
+        java.util.concurrent.atomic.LongAdder exactCount = new java.util.concurrent.atomic.LongAdder();
+        java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
+        java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
         IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
-            double tanEl = Math.tan(Math.toRadians(g.elevationOfRow(row)));
+            double elRad = Math.toRadians(g.elevationOfRow(row));
+            double tanEl = Math.tan(elRad), sinEl = Math.sin(elRad), cosEl = Math.cos(elRad);
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
             double[] p = new double[4];
+            int[] candidates = new int[16];
+            double[] hint = new double[2];
+            long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int col = 0; col < width; col++) {
                 int view = viewOfCol[col];
                 double yTan = tanEl * secOfCol[col];
@@ -103,10 +149,94 @@ public final class Stitcher {
                 if (argbOut != null) {
                     argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
                 }
-                rangeOut[i] = inverseEyeDepth == null ? nearestRange(captures[view].depth(), layout, p[0], p[1])
-                        : (float) range(inverseEyeDepth[view], layout, p, scratch);
+                if (inverseEyeDepth == null) {
+                    rangeOut[i] = nearestRange(captures[view].depth(), layout, p[0], p[1]);
+                    continue;
+                }
+                double r = Double.NaN;
+                if (seen != null) {
+                    // The pixel's own ray in the eye's frame (jME axes: east, up, south).
+                    double dx = cosEl * sinAz[col], dy = sinEl, dz = -cosEl * cosAz[col];
+                    r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
+                    if (!Double.isNaN(r)) {
+                        rowExact++;
+                    } else if (probe != null) {
+                        r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1]);
+                        rowProbed++;
+                    } else if (hint[0] > 0) {
+                        r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
+                        rowExact++;
+                    } else {
+                        rowFallback++;
+                    }
+                }
+                rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth[view], layout, p, scratch) : r);
             }
+            exactCount.add(rowExact);
+            probed.add(rowProbed);
+            fallback.add(rowFallback);
         });
+        return new Result(exactCount.sum(), probed.sum(), fallback.sum());
+    }
+
+    /**
+     * The distance along a pixel's own ray to the nearest of the triangles seen at the 4×4 view
+     * samples around it; +∞ (sky) when nothing is seen there; NaN when it meets none of them.
+     *
+     * @param tri        triangle per view sample, −1 for sky
+     * @param px         fractional view pixel (centres at integers), GL rows
+     * @param candidates a 16-int scratch buffer, overwritten
+     * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
+     *                   samples (else 0), [1] the distance to the nearest candidate's first corner
+     */
+    static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
+                             double dz, int[] candidates, double[] hint) {
+        int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
+        int w = l.widthPx(), h = l.heightPx();
+        int n = 0;
+        boolean skyInCentre = false;
+        for (int oy = -1; oy <= 2; oy++) {
+            int y = y0 + oy;
+            if (y < 0 || y >= h) {
+                continue; // beyond the view's edge: not seen, not sky
+            }
+            for (int ox = -1; ox <= 2; ox++) {
+                int x = x0 + ox;
+                boolean central = (oy == 0 || oy == 1) && (ox == 0 || ox == 1);
+                if (x < 0 || x >= w) {
+                    continue;
+                }
+                int t = tri[y * w + x];
+                if (t < 0) {
+                    skyInCentre |= central;
+                    continue;
+                }
+                boolean known = false;
+                for (int k = 0; k < n; k++) {
+                    if (candidates[k] == t) {
+                        known = true;
+                        break;
+                    }
+                }
+                if (!known) {
+                    candidates[n++] = t;
+                }
+            }
+        }
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            best = Math.min(best, seen.distanceAlong(candidates[k], dx, dy, dz));
+        }
+        if (best < Double.POSITIVE_INFINITY || n == 0) {
+            return best;
+        }
+        double nearestCorner = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            nearestCorner = Math.min(nearestCorner, seen.cornerDistanceMetres(candidates[k]));
+        }
+        hint[0] = skyInCentre ? 1 : 0;
+        hint[1] = nearestCorner;
+        return Double.NaN;
     }
 
     private static int clampX(ViewLayout l, int x) {

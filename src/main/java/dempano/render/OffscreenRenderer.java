@@ -164,50 +164,56 @@ public final class OffscreenRenderer {
     }
 
     /**
-     * Renders the views of a layout, the eye at the scene's origin looking horizontally.
+     * What one render draws and reads back.
      *
-     * @param scene       eye-relative scene (x east, y up, z south)
+     * @param layout      the views
+     * @param mode        projection and depth test; which target {@link ViewCapture#depth()} holds
      * @param nearMetres  near plane
      * @param farMetres   far plane (STANDARD_24) and culling distance (all modes)
+     * @param colour      read the colour target (else captures carry no colour; set the terrain
+     *                    material's {@code DistanceOnly} so the shader skips shading)
+     * @param rangeTarget captures' depth is the shader's range target whatever the mode (the mode
+     *                    then only chooses the projection and depth test); SHADER_RANGE needs it
+     * @param surfaces    also read which triangle each sample sees ({@link ViewCapture#geometryIds()},
+     *                    {@link ViewCapture#primitiveIds()}), for exact per-pixel distances
      * @param release     free the scene's GL buffers afterwards (for single-use scenes)
+     */
+    public record ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
+                              boolean rangeTarget, boolean surfaces, boolean release) {
+        public ViewRequest {
+            if (mode == DepthMode.SHADER_RANGE && !rangeTarget) {
+                throw new IllegalArgumentException("the shader-range mode reads the range target");
+            }
+        }
+
+        /** Colour and the mode's depth, nothing else; buffers kept. */
+        public static ViewRequest of(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
+            return new ViewRequest(layout, mode, nearMetres, farMetres, true, mode == DepthMode.SHADER_RANGE, false, false);
+        }
+    }
+
+    /**
+     * Renders the views of a layout, the eye at the scene's origin looking horizontally: colour and
+     * the depth mode's target, GL buffers freed afterwards when {@code release}.
+     *
+     * @param scene eye-relative scene (x east, y up, z south)
      */
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release) {
-        return render(scene, layout, mode, nearMetres, farMetres, release, true);
+        ViewRequest r = ViewRequest.of(layout, mode, nearMetres, farMetres);
+        return render(scene, new ViewRequest(layout, mode, nearMetres, farMetres, true, r.rangeTarget(), false, release),
+                new long[2]);
     }
 
     /**
-     * As {@link #render(Node, ViewLayout, DepthMode, double, double, boolean)}; with {@code colour}
-     * false the colour target is not read back (captures carry no colour), and the terrain material
-     * should have {@code DistanceOnly} set so the shader skips shading.
+     * Renders the views a request asks for, also reporting where the time went:
+     * {@code drawAndReadNanos[0]} receives the time to draw (up to glFinish), {@code [1]} the time to
+     * read the targets back.
+     *
+     * @param scene eye-relative scene (x east, y up, z south)
      */
-    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
-                                boolean release, boolean colour) {
-        return render(scene, layout, mode, nearMetres, farMetres, release, colour, new long[2]);
-    }
-
-    /**
-     * As above, also reporting where the time went: {@code drawAndReadNanos[0]} receives the time to
-     * draw (up to glFinish), {@code [1]} the time to read the targets back.
-     */
-    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
-                                boolean release, boolean colour, long[] drawAndReadNanos) {
-        return render(scene, layout, mode, nearMetres, farMetres, release, colour, mode == DepthMode.SHADER_RANGE,
-                drawAndReadNanos);
-    }
-
-    /**
-     * As above; with {@code readRangeTarget} the captures' depth is the shader's range target
-     * whatever the depth mode (the mode then only chooses the projection and depth test), else the
-     * target the mode reads ({@link ViewCapture#depth()}).
-     */
-    public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
-                                boolean release, boolean colour, boolean readRangeTarget, long[] drawAndReadNanos) {
-        if (mode == DepthMode.SHADER_RANGE && !readRangeTarget) {
-            throw new IllegalArgumentException("the shader-range mode reads the range target");
-        }
-        return onGlThread("rendering", () -> app.renderViews(scene, layout, mode, nearMetres, farMetres, release,
-                colour, readRangeTarget, drawAndReadNanos));
+    public ViewCapture[] render(Node scene, ViewRequest request, long[] drawAndReadNanos) {
+        return onGlThread("rendering", () -> app.renderViews(scene, request, drawAndReadNanos));
     }
 
     /** A GL task's result or what it threw (never thrown on the GL thread: jME would log it and hang the caller). */
@@ -412,7 +418,8 @@ public final class OffscreenRenderer {
             }
             fb = new FrameBuffer(w, h, 1);
             fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RGBA8));
-            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.R32F));
+            // Range in metres, and which triangle: the geometry id and gl_PrimitiveID as exact float integers.
+            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RGBA32F));
             fb.setDepthTarget(FrameBuffer.FrameBufferTarget.newTarget(reversed ? Image.Format.Depth32F : Image.Format.Depth24));
             fb.setMultiTarget(true);
             fbWidth = w;
@@ -421,8 +428,11 @@ public final class OffscreenRenderer {
             return fb;
         }
 
-        ViewCapture[] renderViews(Node scene, ViewLayout layout, DepthMode mode, double near, double far, boolean release,
-                                  boolean withColour, boolean readRangeTarget, long[] nanos) {
+        ViewCapture[] renderViews(Node scene, ViewRequest request, long[] nanos) {
+            ViewLayout layout = request.layout();
+            DepthMode mode = request.mode();
+            double near = request.nearMetres(), far = request.farMetres();
+            boolean withColour = request.colour(), readRangeTarget = request.rangeTarget(), surfaces = request.surfaces();
             int w = layout.widthPx(), h = layout.heightPx();
             boolean reversed = mode.reversedZ();
             FrameBuffer target = framebuffer(w, h, reversed);
@@ -457,6 +467,8 @@ public final class OffscreenRenderer {
             ViewCapture[] out = new ViewCapture[layout.views()];
             ByteBuffer colour = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder());
             FloatBuffer depth = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder()).asFloatBuffer();
+            FloatBuffer rangeRgba = surfaces
+                    ? ByteBuffer.allocateDirect(w * h * 16).order(ByteOrder.nativeOrder()).asFloatBuffer() : null;
             try {
                 for (int k = 0; k < layout.views(); k++) {
                     double az = Math.toRadians(layout.axisAzimuthDeg(k));
@@ -488,21 +500,41 @@ public final class OffscreenRenderer {
                         rgba = new byte[w * h * 4];
                         colour.get(rgba);
                     }
-                    depth.clear();
-                    if (readRangeTarget) {
+                    float[] d = new float[w * h];
+                    int[] geometryIds = null, primitiveIds = null;
+                    if (surfaces) {
+                        // One read of the whole range target: range, geometry id, primitive id.
                         GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
-                        GL11.glReadPixels(0, 0, w, h, GL11.GL_RED, GL11.GL_FLOAT, depth);
-                    } else {
-                        GL11.glReadPixels(0, 0, w, h, GL11.GL_DEPTH_COMPONENT, GL11.GL_FLOAT, depth);
+                        rangeRgba.clear();
+                        GL11.glReadPixels(0, 0, w, h, GL11.GL_RGBA, GL11.GL_FLOAT, rangeRgba);
+                        geometryIds = new int[w * h];
+                        primitiveIds = new int[w * h];
+                        for (int i = 0, o = 0; i < w * h; i++, o += 4) {
+                            float range = rangeRgba.get(o);
+                            if (readRangeTarget) {
+                                d[i] = range;
+                            }
+                            boolean drawn = range > 0;
+                            geometryIds[i] = drawn ? (int) rangeRgba.get(o + 1) : -1;
+                            primitiveIds[i] = drawn ? (int) rangeRgba.get(o + 2) : -1;
+                        }
+                    }
+                    if (!readRangeTarget || !surfaces) {
+                        depth.clear();
+                        if (readRangeTarget) {
+                            GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
+                            GL11.glReadPixels(0, 0, w, h, GL11.GL_RED, GL11.GL_FLOAT, depth);
+                        } else {
+                            GL11.glReadPixels(0, 0, w, h, GL11.GL_DEPTH_COMPONENT, GL11.GL_FLOAT, depth);
+                        }
+                        depth.get(d);
                     }
                     GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT0);
-                    float[] d = new float[w * h];
-                    depth.get(d);
                     int err = GL11.glGetError();
                     if (err != GL11.GL_NO_ERROR) {
                         throw new IllegalStateException("OpenGL error 0x" + Integer.toHexString(err) + " rendering view " + k);
                     }
-                    out[k] = new ViewCapture(k, rgba, d);
+                    out[k] = new ViewCapture(k, rgba, d, geometryIds, primitiveIds);
                     nanos[0] += t1 - t0;
                     nanos[1] += System.nanoTime() - t1;
                 }
@@ -511,7 +543,7 @@ public final class OffscreenRenderer {
                 vp.detachScene(scene);
                 renderManager.removePreView(vp);
                 renderer.setFrameBuffer(null);
-                if (release) {
+                if (request.release()) {
                     deleteGlBuffers(renderer, scene);
                 }
             }

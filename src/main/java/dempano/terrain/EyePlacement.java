@@ -36,6 +36,32 @@ public final class EyePlacement {
         liftPerSquareMetre = refraction.liftMetres(1);
     }
 
+    /**
+     * Where the shader puts a vertex, computed in double precision: the same subtraction of the eye,
+     * refraction lift over the ground distance between the feet, and rotation as Terrain.vert.
+     *
+     * @param ecef          the vertex, ECEF metres
+     * @param up            the ellipsoid normal at the vertex (ECEF, unit)
+     * @param heightMetres  the vertex's height above the ellipsoid as placed
+     * @param out           receives x, y, z in the eye's frame (jME axes: east, up, south), metres,
+     *                      from {@code out[at]}
+     */
+    public void place(double[] ecef, double[] up, double heightMetres, double[] out, int at) {
+        double rx = ecef[0] - eyeEcef[0], ry = ecef[1] - eyeEcef[1], rz = ecef[2] - eyeEcef[2];
+        double cx = rx - heightMetres * up[0] - footRelative[0];
+        double cy = ry - heightMetres * up[1] - footRelative[1];
+        double cz = rz - heightMetres * up[2] - footRelative[2];
+        double r2 = 2 * Ellipsoid.MEAN_RADIUS_METRES;
+        double ground = r2 * Math.asin(Math.min(1, Math.sqrt(cx * cx + cy * cy + cz * cz) / r2));
+        double lift = liftPerSquareMetre * ground * ground;
+        rx += lift * up[0];
+        ry += lift * up[1];
+        rz += lift * up[2];
+        for (int a = 0; a < 3; a++) {
+            out[at + a] = rows[a][0] * rx + rows[a][1] * ry + rows[a][2] * rz;
+        }
+    }
+
     /** Sets the eye's uniforms on a terrain material. */
     public void apply(Material m) {
         float[] high = new float[3], low = new float[3];

@@ -64,10 +64,16 @@ public final class TerrainBuilder {
      * @param reusedPatches   patches whose geometry came from the {@link MeshCache}
      * @param transientParts  geometries made for this build only: release their buffers after drawing
      * @param evicted         geometries the mesh cache let go: release their buffers too
+     * @param drawn           every geometry of the scene, indexed by the {@link #GEOMETRY_ID} it carries
+     *                        (what the shader writes beside each sample's range)
      */
     public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel,
-                          int hiddenPatches, int reusedPatches, List<Geometry> transientParts, List<Geometry> evicted) {
+                          int hiddenPatches, int reusedPatches, List<Geometry> transientParts, List<Geometry> evicted,
+                          List<Geometry> drawn) {
     }
+
+    /** The material parameter, set per geometry as an override, that numbers the geometries of one build. */
+    public static final String GEOMETRY_ID = "GeometryId";
 
     /**
      * Full resolution everywhere.
@@ -261,6 +267,7 @@ public final class TerrainBuilder {
         Map<Long, TerrainQuad> quads = new HashMap<>();
         Map<Long, List<PatchMesh>> merged = new HashMap<>();
         List<Geometry> transientParts = new ArrayList<>();
+        List<Geometry> drawn = new ArrayList<>();
         long vertices = 0, triangles = 0;
         int reused = 0;
         int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(p) + 1];
@@ -278,7 +285,7 @@ public final class TerrainBuilder {
                 vertices += g.getMesh().getVertexCount();
                 triangles += g.getMesh().getTriangleCount();
                 reused++;
-                attach(quad, g, w.cached.hull(), material, placement);
+                attach(quad, g, w.cached.hull(), material, placement, drawn);
                 continue;
             }
             vertices += w.mesh.vertexCount();
@@ -288,7 +295,7 @@ public final class TerrainBuilder {
             } else {
                 TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
                 patch.setMesh(PatchMesh.merge(List.of(w.mesh)));
-                attach(quad, patch, w.mesh.hull(), material, placement);
+                attach(quad, patch, w.mesh.hull(), material, placement, drawn);
                 if (w.meshKey != null) {
                     meshes.put(w.meshKey, new MeshCache.Entry(patch, w.mesh.hull(), w.mesh.vertexCount()));
                 } else {
@@ -300,23 +307,28 @@ public final class TerrainBuilder {
             TerrainQuad quad = quads.get(e.getKey());
             TerrainPatch patch = new TerrainPatch(quad.getName() + "-coarse-" + e.getValue().size() + "-patches");
             patch.setMesh(PatchMesh.merge(e.getValue()));
-            attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement);
+            attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement, drawn);
             transientParts.add(patch);
         }
         List<Geometry> evicted = meshes == null ? List.of() : meshes.trim(inUse);
         root.updateGeometricState();
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
-                transientParts, evicted);
+                transientParts, evicted, List.copyOf(drawn));
     }
 
     /**
      * Puts a geometry under its block for this eye: its material, and its bound in the eye's frame
      * (the vertices are ECEF; jME's culling and the views' azimuth sectors read this bound).
      */
-    private static void attach(Node quad, Geometry g, double[] hull, Material material, EyePlacement placement) {
+    private static void attach(Node quad, Geometry g, double[] hull, Material material, EyePlacement placement,
+                               List<Geometry> drawn) {
         if (material != null) {
             g.setMaterial(material);
         }
+        // Numbered for this build (a cached geometry carries the number of its latest build).
+        g.clearMatParamOverrides();
+        g.addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int, GEOMETRY_ID, drawn.size()));
+        drawn.add(g);
         g.setModelBound(placement.bound(hull));
         g.setUserData(EYE_BOUND, true);
         quad.attachChild(g);

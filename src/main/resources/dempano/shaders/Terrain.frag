@@ -6,6 +6,7 @@ uniform vec3 g_CameraPosition;
 uniform float m_RangeMetres;
 uniform float m_HazeMetres;
 uniform vec3 m_SunDirection;
+uniform int m_GeometryId;
 layout(location = 0) out vec4 outColour;
 layout(location = 1) out vec4 outRange;
 
@@ -28,7 +29,8 @@ void main() {
     }
     // The camera is at the origin for panoramas; the fly-through moves it.
     float range = length(vPosition - g_CameraPosition);
-    outRange = vec4(range, 0.0, 0.0, 1.0);
+    // The triangle seen: geometry and primitive ids, exact as floats below 2^24 (checked on the CPU).
+    outRange = vec4(range, float(m_GeometryId), float(gl_PrimitiveID), 1.0);
 #ifdef DISTANCE_ONLY
     outColour = vec4(0.0);
 #else

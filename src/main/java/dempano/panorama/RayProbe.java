@@ -1,0 +1,19 @@
+package dempano.panorama;
+
+/**
+ * The terrain itself, asked along one ray: where the {@link Stitcher}'s candidates fail (the
+ * triangle a pixel centre's ray meets was too small, seen at grazing incidence, for any view sample
+ * to see it), it finds the ray's first crossing with the surface by search.
+ */
+@FunctionalInterface
+public interface RayProbe {
+    /**
+     * The distance along a unit ray from the eye to where it first goes below the terrain, searched
+     * outward from {@code fromMetres}; +∞ when it stays above out to the range of sight.
+     *
+     * @param dx         ray direction, unit length, in the eye's frame (jME axes: east, up, south)
+     * @param fromMetres a distance at which the ray is expected above the terrain (searched from
+     *                   nearer the eye when it is not)
+     */
+    double firstHitMetres(double dx, double dy, double dz, double fromMetres);
+}

@@ -1,0 +1,101 @@
+package dempano.reference;
+
+import dempano.dem.Mosaic;
+import dempano.geo.Ellipsoid;
+import dempano.geo.LocalFrame;
+import dempano.geo.Refraction;
+import dempano.geo.Viewpoint;
+import dempano.panorama.RayProbe;
+import dempano.terrain.Triangulation;
+
+/**
+ * A ray's first crossing with the full-resolution triangulated surface (the surface the CPU
+ * reference draws: mosaic cells split by {@link Triangulation}, NaN samples at sea level, refraction
+ * lift k·d²/2R, cut at the range of sight), found by search: outward in steps of
+ * {@link #STEP_RATIO} until the ray is below the surface, then bisection to {@link #TOLERANCE}
+ * (relative). A dip of the terrain above the ray narrower than one step can be stepped over. Stateless
+ * after construction: thread-safe.
+ */
+public final class TerrainRayProbe implements RayProbe {
+    /** Outward steps multiply the distance by this. */
+    static final double STEP_RATIO = 1.1;
+    /** Bisection stops when the bracket is this narrow, relative to the distance. */
+    static final double TOLERANCE = 1e-9;
+
+    private final Mosaic mosaic;
+    private final LocalFrame frame;
+    private final Refraction refraction;
+    private final double rangeMetres;
+    private final double[] eyeFoot = new double[3];
+
+    public TerrainRayProbe(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres) {
+        this.mosaic = mosaic;
+        this.frame = eye.eyeFrame();
+        this.refraction = refraction;
+        this.rangeMetres = rangeMetres;
+        Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
+    }
+
+    @Override
+    public double firstHitMetres(double dx, double dy, double dz, double fromMetres) {
+        double e = dx, n = -dz, u = dy; // jME axes (east, up, south) to ENU
+        double horizontal = Math.hypot(e, n);
+        double tMax = horizontal > 0 ? rangeMetres / horizontal : Double.POSITIVE_INFINITY;
+        double a = Math.max(1e-3, Math.min(fromMetres, tMax));
+        while (a > 1e-3 && clearance(e, n, u, a) <= 0) {
+            a /= 4; // not above there: back toward the eye, which is above the terrain
+        }
+        double b = a;
+        while (true) {
+            b = Math.min(b * STEP_RATIO, tMax);
+            double c = clearance(e, n, u, b);
+            if (Double.isNaN(c)) {
+                return Double.POSITIVE_INFINITY; // off the mosaic: nothing drawn there
+            }
+            if (c <= 0) {
+                break;
+            }
+            if (b >= tMax || b > 1e8) {
+                return Double.POSITIVE_INFINITY;
+            }
+            a = b;
+        }
+        while (b - a > TOLERANCE * b) {
+            double m = 0.5 * (a + b);
+            if (clearance(e, n, u, m) > 0) {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        return 0.5 * (a + b);
+    }
+
+    /** Height of the ray's point at distance t above the (lifted) surface, metres; NaN off the mosaic. */
+    double clearance(double e, double n, double u, double t) {
+        double[] ecef = new double[3];
+        frame.enuToEcef(t * e, t * n, t * u, ecef);
+        double[] geo = Ellipsoid.toGeodetic(ecef[0], ecef[1], ecef[2]);
+        double row = mosaic.rowOf(geo[0]), col = mosaic.colOf(geo[1]);
+        int r = (int) Math.floor(row), c = (int) Math.floor(col);
+        if (r < 0 || c < 0 || r + 1 >= mosaic.rows() || c + 1 >= mosaic.cols()) {
+            return Double.NaN;
+        }
+        double v = row - r, w = col - c; // south and east fractions
+        double nw = height(r, c), ne = height(r, c + 1), sw = height(r + 1, c), se = height(r + 1, c + 1);
+        double surface;
+        if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
+            surface = w >= v ? nw + w * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + w * (se - sw);
+        } else {
+            surface = w + v <= 1 ? nw + w * (ne - nw) + v * (sw - nw) : se + (1 - w) * (sw - se) + (1 - v) * (ne - se);
+        }
+        double[] foot = new double[3];
+        Ellipsoid.toEcef(geo[0], geo[1], 0, foot);
+        return geo[2] - surface - refraction.liftMetres(Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot));
+    }
+
+    private double height(int r, int c) {
+        float h = mosaic.sample(r, c);
+        return Float.isNaN(h) ? 0 : h;
+    }
+}
