@@ -9,11 +9,14 @@ package dempano.panorama;
 public interface RayProbe {
     /**
      * The distance along a unit ray from the eye to where it first goes below the terrain, searched
-     * outward from {@code fromMetres}; +∞ when it stays above out to the range of sight.
+     * outward from {@code fromMetres} to {@code toMetres}.
      *
      * @param dx         ray direction, unit length, in the eye's frame (jME axes: east, up, south)
      * @param fromMetres a distance at which the ray is expected above the terrain (searched from
      *                   nearer the eye when it is not)
+     * @param toMetres   how far to search
+     * @return the distance, metres; +∞ when the ray stays above the terrain out to the range of sight
+     *         (or leaves the DEM); NaN when it stays above out to {@code toMetres} only (undecided)
      */
-    double firstHitMetres(double dx, double dy, double dz, double fromMetres);
+    double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres);
 }

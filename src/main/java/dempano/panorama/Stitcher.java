@@ -136,7 +136,7 @@ public final class Stitcher {
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
             double[] p = new double[4];
             int[] candidates = new int[16];
-            double[] hint = new double[2];
+            double[] hint = new double[3];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int col = 0; col < width; col++) {
                 int view = viewOfCol[col];
@@ -160,8 +160,8 @@ public final class Stitcher {
                     r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
                     if (!Double.isNaN(r)) {
                         rowExact++;
-                    } else if (probe != null) {
-                        r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1]);
+                    } else if (probe != null
+                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500))) {
                         rowProbed++;
                     } else if (hint[0] > 0) {
                         r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
@@ -187,7 +187,8 @@ public final class Stitcher {
      * @param px         fractional view pixel (centres at integers), GL rows
      * @param candidates a 16-int scratch buffer, overwritten
      * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
-     *                   samples (else 0), [1] the distance to the nearest candidate's first corner
+     *                   samples (else 0), [1] and [2] the distances to the nearest and the farthest
+     *                   candidate's first corner
      */
     static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
                              double dz, int[] candidates, double[] hint) {
@@ -230,12 +231,15 @@ public final class Stitcher {
         if (best < Double.POSITIVE_INFINITY || n == 0) {
             return best;
         }
-        double nearestCorner = Double.POSITIVE_INFINITY;
+        double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;
         for (int k = 0; k < n; k++) {
-            nearestCorner = Math.min(nearestCorner, seen.cornerDistanceMetres(candidates[k]));
+            double d = seen.cornerDistanceMetres(candidates[k]);
+            nearestCorner = Math.min(nearestCorner, d);
+            farthestCorner = Math.max(farthestCorner, d);
         }
         hint[0] = skyInCentre ? 1 : 0;
         hint[1] = nearestCorner;
+        hint[2] = farthestCorner;
         return Double.NaN;
     }
 

@@ -12,9 +12,9 @@ import dempano.terrain.Triangulation;
  * A ray's first crossing with the full-resolution triangulated surface (the surface the CPU
  * reference draws: mosaic cells split by {@link Triangulation}, NaN samples at sea level, refraction
  * lift k·d²/2R, cut at the range of sight), found by search: outward in steps of
- * {@link #STEP_RATIO} until the ray is below the surface, then bisection to {@link #TOLERANCE}
- * (relative). A dip of the terrain above the ray narrower than one step can be stepped over. Stateless
- * after construction: thread-safe.
+ * {@link #STEP_RATIO} until the ray is below the surface, then regula falsi (Illinois) to
+ * {@link #TOLERANCE} (relative). A crest rising above the ray for less than one step can be stepped
+ * over. Stateless after construction: thread-safe.
  */
 public final class TerrainRayProbe implements RayProbe {
     /** Outward steps multiply the distance by this. */
@@ -37,35 +37,57 @@ public final class TerrainRayProbe implements RayProbe {
     }
 
     @Override
-    public double firstHitMetres(double dx, double dy, double dz, double fromMetres) {
+    public double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres) {
         double e = dx, n = -dz, u = dy; // jME axes (east, up, south) to ENU
         double horizontal = Math.hypot(e, n);
-        double tMax = horizontal > 0 ? rangeMetres / horizontal : Double.POSITIVE_INFINITY;
+        double tMax = Math.min(toMetres, horizontal > 0 ? rangeMetres / horizontal : Double.POSITIVE_INFINITY);
         double a = Math.max(1e-3, Math.min(fromMetres, tMax));
-        while (a > 1e-3 && clearance(e, n, u, a) <= 0) {
+        double ca = clearance(e, n, u, a);
+        while (a > 1e-3 && !(ca > 0)) {
             a /= 4; // not above there: back toward the eye, which is above the terrain
+            ca = clearance(e, n, u, a);
         }
-        double b = a;
+        if (!(ca > 0)) {
+            return Double.NaN;
+        }
+        double b = a, cb;
         while (true) {
             b = Math.min(b * STEP_RATIO, tMax);
-            double c = clearance(e, n, u, b);
-            if (Double.isNaN(c)) {
+            cb = clearance(e, n, u, b);
+            if (Double.isNaN(cb)) {
                 return Double.POSITIVE_INFINITY; // off the mosaic: nothing drawn there
             }
-            if (c <= 0) {
+            if (cb <= 0) {
                 break;
             }
-            if (b >= tMax || b > 1e8) {
-                return Double.POSITIVE_INFINITY;
+            if (b >= tMax) {
+                return b >= rangeMetres / Math.max(horizontal, 1e-300) ? Double.POSITIVE_INFINITY : Double.NaN;
             }
             a = b;
+            ca = cb;
         }
-        while (b - a > TOLERANCE * b) {
-            double m = 0.5 * (a + b);
-            if (clearance(e, n, u, m) > 0) {
+        // Illinois regula falsi: the clearance is close to linear along the ray within a triangle.
+        int side = 0;
+        for (int i = 0; i < 100 && b - a > TOLERANCE * b; i++) {
+            double m = Math.max(a, Math.min(b, (a * cb - b * ca) / (cb - ca)));
+            double cm = clearance(e, n, u, m);
+            if (Double.isNaN(cm) || cm == 0) {
+                return m;
+            }
+            if (cm > 0) {
                 a = m;
+                ca = cm;
+                if (side == 1) {
+                    cb /= 2;
+                }
+                side = 1;
             } else {
                 b = m;
+                cb = cm;
+                if (side == -1) {
+                    ca /= 2;
+                }
+                side = -1;
             }
         }
         return 0.5 * (a + b);
