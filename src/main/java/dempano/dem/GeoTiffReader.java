@@ -249,6 +249,12 @@ public final class GeoTiffReader {
             throw new DemException(source + " uses TIFF predictor " + predictor + ", which dempano cannot decode "
                     + "(supported: 1 none, 2 horizontal, 3 floating point)");
         }
+        if (predictor != null && predictor != 1 && dir.getReader().getByteOrder() == java.nio.ByteOrder.BIG_ENDIAN) {
+            // The TIFF library undoes predictors in little-endian order only (checked in GeoTiffReaderTest).
+            throw new DemException(source + " is a big-endian TIFF with predictor " + predictor + " ("
+                    + (predictor == 2 ? "horizontal" : "floating point") + "), which dempano cannot decode; rewrite it "
+                    + "little-endian, e.g. gdal_translate -co ENDIANNESS=LITTLE");
+        }
         if (dir.getSamplesPerPixel() != 1) {
             throw new DemException(source + " has " + dir.getSamplesPerPixel() + " bands; a DEM needs exactly one "
                     + "band of heights (extract it, e.g. gdal_translate -b 1)");
