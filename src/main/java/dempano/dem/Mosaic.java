@@ -38,6 +38,7 @@ public final class Mosaic {
     private final List<TileId> tilesMissing;
     private final List<String> warnings;
     private final String sourceDescription;
+    private final java.util.Map<TileId, List<DemContribution>> tileSources;
 
     /** A sample whose height was interpolated over a void. */
     public static final int FLAG_FILLED_VOID = 1;
@@ -62,6 +63,15 @@ public final class Mosaic {
         this.tilesMissing = Collections.unmodifiableList(missing);
         this.warnings = Collections.unmodifiableList(warnings);
         this.sourceDescription = sourceDescription;
+        java.util.Map<TileId, List<DemContribution>> bySource = new java.util.LinkedHashMap<>();
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                if (t != null) {
+                    bySource.put(t.id(), t.contributions());
+                }
+            }
+        }
+        this.tileSources = Collections.unmodifiableMap(bySource);
     }
 
     /**
@@ -298,6 +308,14 @@ public final class Mosaic {
     /** Tiles needed but absent (held as sea level). */
     public List<TileId> tilesMissing() {
         return tilesMissing;
+    }
+
+    /**
+     * For each tile used (in {@link #tilesUsed()} order), which sources served how many of its samples
+     * and their vertical datums (see {@link HgtTile#contributions()}).
+     */
+    public java.util.Map<TileId, List<DemContribution>> tileSources() {
+        return tileSources;
     }
 
     /** The DEM source's description (e.g. its folder), for messages. */
