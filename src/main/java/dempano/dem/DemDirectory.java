@@ -158,6 +158,12 @@ public final class DemDirectory implements DemSource {
             throw new DemException("tile " + id + ": " + file + " " + found.get(0).problem());
         }
         Object stamp = stamp(file);
+        if (TileId.isGeoTiffFileName(file.getFileName().toString())) {
+            // Its edges come from the neighbours' files (see GeoTiffReader.read): their changes count too.
+            stamp = List.of(stamp, neighbourStamp(TileId.of(id.latSouthDeg(), id.lonWestDeg() + 1)),
+                    id.latSouthDeg() > -90 ? neighbourStamp(TileId.of(id.latSouthDeg() - 1, id.lonWestDeg())) : "",
+                    id.latSouthDeg() > -90 ? neighbourStamp(TileId.of(id.latSouthDeg() - 1, id.lonWestDeg() + 1)) : "");
+        }
         synchronized (cache) {
             Cached cached = cache.get(id);
             if (cached != null && cached.stamp().equals(stamp)) {
@@ -165,11 +171,30 @@ public final class DemDirectory implements DemSource {
             }
         }
         // Outside the lock: reading takes a while.
-        HgtTile tile = TileId.isGeoTiffFileName(file.getFileName().toString()) ? GeoTiffReader.read(file) : HgtReader.read(file);
+        HgtTile tile = TileId.isGeoTiffFileName(file.getFileName().toString())
+                ? GeoTiffReader.read(file, this::geoTiffOf) : HgtReader.read(file);
         synchronized (cache) {
             cache.put(id, new Cached(tile, stamp));
         }
         return Optional.of(tile);
+    }
+
+    private Object neighbourStamp(TileId id) {
+        Path p = geoTiffOf(id);
+        if (p == null) {
+            return "";
+        }
+        try {
+            return stamp(p);
+        } catch (DemException e) {
+            return "unreadable";
+        }
+    }
+
+    /** The one usable GeoTIFF of a tile, or null: a GeoTIFF tile's neighbours complete its eastern and southern edges. */
+    private Path geoTiffOf(TileId id) {
+        Path p = files.get(id);
+        return p != null && TileId.isGeoTiffFileName(p.getFileName().toString()) ? p : null;
     }
 
     /**

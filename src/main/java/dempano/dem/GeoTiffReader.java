@@ -94,8 +94,112 @@ public final class GeoTiffReader {
      * @throws DemException naming the file and the problem
      */
     public static HgtTile read(Path file) {
+        return read(file, t -> null);
+    }
+
+    /**
+     * Like {@link #read(Path)}, but where the file's pixels stop short of the tile's eastern or southern
+     * edge (Copernicus tiles: the edge pixels are the neighbours'), the samples between the last pixel
+     * centres and the edge are interpolated towards the neighbouring GeoTIFFs' first column / row
+     * (only those are decoded) instead of repeating the last pixels. Without a neighbour, or when it
+     * cannot be read, the last pixels are repeated (and a warning says why for an unreadable one).
+     *
+     * @param neighbours the GeoTIFF holding a tile, or null if there is none
+     */
+    public static HgtTile read(Path file, java.util.function.Function<TileId, Path> neighbours) {
         TileId id = TileId.parseFileName(file.getFileName().toString());
-        return toTile(readGrid(file), id);
+        Grid g = readGrid(file);
+        List<String> warnings = new ArrayList<>();
+        Grid stitched = stitch(g, id, neighbours, warnings);
+        HgtTile t = toTile(stitched, id);
+        if (warnings.isEmpty()) {
+            return t;
+        }
+        warnings.addAll(t.warnings());
+        return new HgtTile(t.id(), t.source(), t.samplesPerSide(), heights(t), t.voids(), voidMask(t), warnings)
+                .withVerticalDatum(t.verticalDatum());
+    }
+
+    private static float[] heights(HgtTile t) {
+        int n = t.samplesPerSide();
+        float[] h = new float[n * n];
+        for (int i = 0; i < h.length; i++) {
+            h[i] = t.heightMetres(i / n, i % n);
+        }
+        return h;
+    }
+
+    private static BitSet voidMask(HgtTile t) {
+        int n = t.samplesPerSide();
+        BitSet m = new BitSet();
+        for (int i = 0; i < n * n; i++) {
+            if (t.isFilledVoid(i / n, i % n)) {
+                m.set(i);
+            }
+        }
+        return m;
+    }
+
+    /**
+     * The grid with one more column (row) just east (south) of it, from the neighbouring tiles' files,
+     * where its last pixel centres stop short of the tile's eastern (southern) edge by up to one pixel.
+     */
+    static Grid stitch(Grid g, TileId id, java.util.function.Function<TileId, Path> neighbours, List<String> warnings) {
+        double eastCol = g.colOf(g.unwrap(id.lonWestDeg() + 1)), southRow = g.rowOf(id.latSouthDeg());
+        boolean east = eastCol > g.width() - 1 + 1e-6 && eastCol <= g.width() + 1e-6;
+        boolean south = southRow > g.height() - 1 + 1e-6 && southRow <= g.height() + 1e-6;
+        if (!east && !south) {
+            return g;
+        }
+        int w = g.width() + (east ? 1 : 0), h = g.height() + (south ? 1 : 0);
+        double lonV = g.lonOfCol0Deg() + g.width() * g.colSpacingDeg(), latV = g.latOfRow0Deg() - g.height() * g.rowSpacingDeg();
+        float[] z = new float[w * h];
+        for (int r = 0; r < g.height(); r++) {
+            System.arraycopy(g.heightsMetres(), r * g.width(), z, r * w, g.width());
+        }
+        Grid e = east ? neighbour(neighbours, TileId.of(id.latSouthDeg(), id.lonWestDeg() + 1), Part.FIRST_COLUMN, g, warnings) : null;
+        Grid s = south ? neighbour(neighbours, TileId.of(id.latSouthDeg() - 1 < -90 ? id.latSouthDeg() : id.latSouthDeg() - 1,
+                id.lonWestDeg()), Part.FIRST_ROW, g, warnings) : null;
+        if (south && id.latSouthDeg() == -90) {
+            s = null;
+        }
+        if (east) {
+            for (int r = 0; r < g.height(); r++) {
+                z[r * w + g.width()] = e != null ? at(e, g.latOfRow0Deg() - r * g.rowSpacingDeg(), lonV) : z[r * w + g.width() - 1];
+            }
+        }
+        if (south) {
+            for (int c = 0; c < g.width(); c++) {
+                z[g.height() * w + c] = s != null ? at(s, latV, g.lonOfCol0Deg() + c * g.colSpacingDeg()) : z[(g.height() - 1) * w + c];
+            }
+        }
+        if (east && south) {
+            Grid se = id.latSouthDeg() == -90 ? null
+                    : neighbour(neighbours, TileId.of(id.latSouthDeg() - 1, id.lonWestDeg() + 1), Part.FIRST_PIXEL, g, warnings);
+            z[w * h - 1] = se != null ? at(se, latV, lonV)
+                    : s != null ? z[w * h - 2] : e != null ? z[(h - 1) * w - 1] : z[(h - 2) * w + w - 2];
+        }
+        return new Grid(g.source(), w, h, z, g.lonOfCol0Deg(), g.latOfRow0Deg(), g.colSpacingDeg(), g.rowSpacingDeg(),
+                g.pixelIsPoint(), g.verticalDatum(), g.geographicEpsg());
+    }
+
+    private static Grid neighbour(java.util.function.Function<TileId, Path> neighbours, TileId id, Part part, Grid of,
+                                  List<String> warnings) {
+        Path file = neighbours.apply(id);
+        if (file == null) {
+            return null;
+        }
+        try {
+            return readGrid(file, part);
+        } catch (DemException e) {
+            warnings.add(of.source() + ": edge towards " + id + " not joined (" + e.getMessage() + "); the last pixels are repeated");
+            return null;
+        }
+    }
+
+    /** A neighbour's height at a coordinate (its pixels, bilinear, up to one pixel beyond), NaN if void. */
+    private static float at(Grid n, double latDeg, double lonDeg) {
+        return sample(n, n.rowOf(latDeg), n.colOf(n.unwrap(lonDeg)));
     }
 
     /**
@@ -105,6 +209,15 @@ public final class GeoTiffReader {
      *                      unsupported layout or compression, projected CRS, implausible heights)
      */
     public static Grid readGrid(Path file) {
+        return readGrid(file, Part.ALL);
+    }
+
+    /** Which pixels to decode: all, or only the first column or row (for a neighbour's edge). */
+    enum Part {
+        ALL, FIRST_COLUMN, FIRST_ROW, FIRST_PIXEL
+    }
+
+    static Grid readGrid(Path file, Part part) {
         byte[] bytes;
         try {
             bytes = Files.readAllBytes(file);
@@ -113,11 +226,11 @@ public final class GeoTiffReader {
         } catch (IOException e) {
             throw new DemException(file + ": cannot read (" + e + ")", e);
         }
-        return decode(file.toString(), file.getFileName().toString(), bytes);
+        return decode(file.toString(), file.getFileName().toString(), bytes, part);
     }
 
     /** {@link #readGrid} on bytes already read; {@code fileName} decides the datum by naming convention. */
-    static Grid decode(String source, String fileName, byte[] bytes) {
+    static Grid decode(String source, String fileName, byte[] bytes, Part part) {
         FileDirectory dir;
         try {
             TIFFImage image = TiffReader.readTiff(bytes);
@@ -157,6 +270,12 @@ public final class GeoTiffReader {
         double shift = point ? 0 : 0.5; // raster coordinates of pixel (0, 0)'s centre
         double lon0 = geo[0] + (shift - geo[4]) * geo[2];
         double lat0 = geo[1] - (shift - geo[5]) * geo[3];
+        if (part == Part.FIRST_COLUMN || part == Part.FIRST_PIXEL) {
+            width = 1;
+        }
+        if (part == Part.FIRST_ROW || part == Part.FIRST_PIXEL) {
+            height = 1;
+        }
         float[] heights = heights(source, dir, width, height);
         return new Grid(source, width, height, heights, lon0, lat0, geo[2], geo[3], point,
                 verticalDatum(keys, fileName), geographic);
@@ -263,7 +382,7 @@ public final class GeoTiffReader {
         Rasters rasters;
         try {
             type = dir.getFieldTypeForSample(0);
-            rasters = dir.readRasters();
+            rasters = dir.readRasters(new mil.nga.tiff.ImageWindow(0, 0, width, height));
         } catch (RuntimeException e) {
             throw new DemException(source + ": cannot decode the image (" + reason(e) + "; truncated or corrupt file?)", e);
         }

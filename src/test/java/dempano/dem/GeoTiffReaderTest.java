@@ -154,6 +154,57 @@ class GeoTiffReaderTest {
         assertEquals(0, t.voids().voidCells());
     }
 
+    /**
+     * Copernicus tiles in one directory: the strip between a tile's last pixel centres and its
+     * eastern / southern edge is interpolated towards the neighbours' first column / row, also across
+     * a change of width (60°N: 60 columns per degree north of it, 80 south of it here). Heights linear
+     * in lat/lon come out exact everywhere; a changed neighbour changes the cached tile.
+     */
+    @Test
+    void copernicusTilesAreJoinedToTheirNeighboursAcrossWidthChanges() throws IOException {
+        int[][] tiles = {{60, 8, 60}, {60, 9, 60}, {59, 8, 80}, {59, 9, 80}};
+        for (int[] t : tiles) {
+            writeCopernicus(t[0], t[1], t[2], 0);
+        }
+        DemDirectory dem = new DemDirectory(dir);
+        HgtTile tile = dem.tile(TileId.of(60, 8)).orElseThrow();
+        assertEquals(121, tile.samplesPerSide());
+        for (int r = 0; r <= 120; r++) {
+            for (int c = 0; c <= 120; c++) {
+                assertEquals(linear(61 - r * D, 8 + c * D), tile.heightMetres(r, c), 2e-3, "sample " + r + ", " + c);
+            }
+        }
+        assertEquals(java.util.List.of(), tile.warnings());
+        // Without neighbours the last pixels repeat: the eastern edge sample is the last pixel's height.
+        Path alone = Files.createDirectory(dir.resolve("alone"));
+        Files.copy(dir.resolve(copernicusName(60, 8)), alone.resolve(copernicusName(60, 8)));
+        HgtTile lonely = new DemDirectory(alone).tile(TileId.of(60, 8)).orElseThrow();
+        assertEquals(linear(61, 8 + 59.0 / 60), lonely.heightMetres(0, 120), 2e-3);
+        // The eastern neighbour rewritten 100 m higher: the cached tile's eastern strip follows.
+        writeCopernicus(60, 9, 60, 100);
+        Files.setLastModifiedTime(dir.resolve(copernicusName(60, 9)),
+                java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis() + 5000));
+        HgtTile again = dem.tile(TileId.of(60, 8)).orElseThrow();
+        assertEquals(linear(61, 9) + 100, again.heightMetres(0, 120), 2e-3);
+        assertEquals(linear(61, 8.5), again.heightMetres(0, 60), 2e-3);
+    }
+
+    private static double linear(double latDeg, double lonDeg) {
+        return 1000 + 500 * (latDeg - 60) + 200 * (lonDeg - 8);
+    }
+
+    private static String copernicusName(int lat, int lon) {
+        return String.format("Copernicus_DSM_COG_10_N%02d_00_E%03d_00_DEM.tif", lat, lon);
+    }
+
+    private void writeCopernicus(int lat, int lon, int colsPerDegree, double add) throws IOException {
+        double dLon = 1.0 / colsPerDegree;
+        Spec s = GeoTiffTestFiles.geographic(colsPerDegree, 120, lon, lat + 1, dLon, D, true).withType(SampleType.FLOAT32)
+                .withCompression(DEFLATE, 3).withLayout(32, 0, ByteOrder.LITTLE_ENDIAN);
+        GeoTiffTestFiles.write(dir.resolve(copernicusName(lat, lon)), s,
+                (r, c) -> add + linear(lat + 1 - r * D, lon + c * dLon));
+    }
+
     @Test
     void nodataAndNanAreVoids() throws IOException {
         Spec s = srtmLike(false).withNodata("-32768").withCompression(LZW, 2);
