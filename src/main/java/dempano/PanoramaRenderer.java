@@ -110,7 +110,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
         t = lap(timings, "tiles", t);
         long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
-        MemoryEstimate.of(req, gl != null, 2 * samplesPerTile * mosaic.tilesUsed().size())
+        MemoryEstimate.of(req, gl != null, Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
                 .check(Runtime.getRuntime().maxMemory());
 
         Viewpoint requested = Double.isNaN(req.altitudeMetres())

@@ -124,6 +124,11 @@ public final class HgtTile {
         return wholeMetres != null ? wholeMetres[i] : heightsMetres[i];
     }
 
+    /** Bytes the heights take: 2 per sample when all are whole metres in int16 range, else 4. */
+    public long heightBytes() {
+        return (wholeMetres != null ? 2L : 4L) * samplesPerSide * samplesPerSide;
+    }
+
     /** True if the sample was a void, its height now interpolated. */
     public boolean isFilledVoid(int row, int col) {
         return filledVoids.get(row * samplesPerSide + col);

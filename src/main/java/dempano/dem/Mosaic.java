@@ -310,6 +310,17 @@ public final class Mosaic {
         return tilesMissing;
     }
 
+    /** Bytes the heights of the tiles used take (float tiles, e.g. Copernicus, 4 per sample, SRTM 2). */
+    public long tileBytes() {
+        long sum = 0;
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                sum += t == null ? 0 : t.heightBytes();
+            }
+        }
+        return sum;
+    }
+
     /**
      * For each tile used (in {@link #tilesUsed()} order), which sources served how many of its samples
      * and their vertical datums (see {@link HgtTile#contributions()}).
