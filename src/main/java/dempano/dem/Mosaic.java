@@ -133,6 +133,10 @@ public final class Mosaic {
                     + " has no usable file for " + (missing.size() == 1 ? "it" : "them") + " (--missing-tiles error)");
         }
         warnings.addAll(Plausibility.edgeMismatches(tiles));
+        String datums = mixedDatums(tiles);
+        if (datums != null) {
+            warnings.add(datums);
+        }
         if (!missing.isEmpty()) {
             warnings.add("no data for " + missing + " in " + source.describe() + ": treated as sea level (0 m)");
         }
@@ -145,6 +149,28 @@ public final class Mosaic {
                     + " tiles at " + ipd + " samples per degree is too large; reduce the range");
         }
         return new Mosaic(sel, ipd, tiles, seaLevel, used, missing, warnings, source.describe());
+    }
+
+    /**
+     * A warning when the tiles' heights refer to different vertical datums (Copernicus' EGM2008 beside
+     * SRTM's EGM96), or null. Known datums only: "unknown" is compatible with anything.
+     */
+    static String mixedDatums(HgtTile[][] tiles) {
+        java.util.Set<String> datums = new java.util.TreeSet<>();
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                if (t != null) {
+                    for (DemContribution c : t.contributions()) {
+                        if (c.samples() > 0 && !c.verticalDatum().equals(DemContribution.UNKNOWN)) {
+                            datums.add(c.verticalDatum());
+                        }
+                    }
+                }
+            }
+        }
+        return datums.size() < 2 ? null : "the DEM heights refer to different vertical datums " + datums
+                + ", used as they are: they differ by the difference of the geoid models (mostly under 1 m, a few metres "
+                + "in places)";
     }
 
     /**

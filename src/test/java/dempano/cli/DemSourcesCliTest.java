@@ -52,6 +52,7 @@ class DemSourcesCliTest {
         assertEquals("EGM96", b.get("verticalDatum").getAsString());
         assertEquals(GeoTiffCliFixtures.HOLE_SAMPLES, b.get("samples").getAsLong());
         assertTrue(r[1].contains(cop + ", then " + srtm), r[1]);
+        assertTrue(r[1].contains("warning: the DEM heights refer to different vertical datums [EGM2008, EGM96]"), r[1]);
     }
 
     @Test
