@@ -234,7 +234,7 @@ public final class GeoTiffReader {
             TIFFImage image = TiffReader.readTiff(bytes);
             dir = fullResolution(image);
         } catch (RuntimeException e) {
-            throw new DemException(source + " is not a readable TIFF file (" + reason(e) + ")", e);
+            throw new DemException(source + " is not a readable TIFF file (" + reason(e) + "; truncated, or not a TIFF?)", e);
         }
         if (dir == null) {
             throw new DemException(source + " holds no image");
