@@ -268,6 +268,46 @@ class GeoTiffReaderTest {
         assertFalse(e.getMessage().contains("\n"), e.getMessage());
     }
 
+    /**
+     * A file whose directory comes first (as in Cloud-Optimized GeoTIFFs; written here by the TIFF
+     * library's own writer) cut short, as by an interrupted download: the message names the file and
+     * the block that is missing.
+     */
+    @ParameterizedTest(name = "{0} % kept")
+    @CsvSource({"50", "90", "99"})
+    void aDownloadCutShortIsRefusedNamingTheFile(int keepPercent) throws IOException {
+        int n = 121;
+        mil.nga.tiff.Rasters rasters = new mil.nga.tiff.Rasters(n, n, 1, mil.nga.tiff.FieldType.SSHORT);
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                rasters.setFirstPixelSample(c, r, (short) plane(r, c));
+            }
+        }
+        mil.nga.tiff.FileDirectory d = new mil.nga.tiff.FileDirectory();
+        d.setImageWidth(n);
+        d.setImageHeight(n);
+        d.setBitsPerSample(16);
+        d.setCompression(mil.nga.tiff.util.TiffConstants.COMPRESSION_DEFLATE);
+        d.setPhotometricInterpretation(1);
+        d.setSamplesPerPixel(1);
+        d.setRowsPerStrip(8);
+        d.setPlanarConfiguration(1);
+        d.setSampleFormat(mil.nga.tiff.util.TiffConstants.SAMPLE_FORMAT_SIGNED_INT);
+        d.setWriteRasters(rasters);
+        d.setModelPixelScale(java.util.List.of(D, D, 0.0));
+        d.setModelTiepoint(java.util.List.of(0.0, 0.0, 0.0, 8.0, 47.0, 0.0));
+        d.setUnsignedIntegerListEntryValue(mil.nga.tiff.FieldTagType.GeoKeyDirectory,
+                java.util.List.of(1, 1, 0, 2, 1024, 0, 1, 2, 1025, 0, 1, 2));
+        byte[] full = mil.nga.tiff.TiffWriter.writeTiffToBytes(new mil.nga.tiff.TIFFImage(d));
+        Path f = dir.resolve("N46E008.tif");
+        Files.write(f, full);
+        assertEquals(plane(60, 70), GeoTiffReader.read(f).heightMetres(60, 70), "the whole file reads");
+        Files.write(f, Arrays.copyOf(full, full.length * keepPercent / 100));
+        DemException e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+        assertTrue(e.getMessage().matches(java.util.regex.Pattern.quote(f.toString())
+                + ": image block \\d+ lies beyond the end of the file \\(\\d+ bytes; truncated\\?\\)"), e.getMessage());
+    }
+
     @Test
     void anUnsupportedCompressionIsRefusedByName() throws IOException {
         Spec s = srtmLike(false).withCompressionCodeWritten(50000);
