@@ -25,10 +25,18 @@ import mil.nga.tiff.TiffReader;
  * predictors; striped and tiled layouts; Cloud-Optimized GeoTIFFs (the full-resolution image is read,
  * overviews are ignored); georeferencing by one ModelTiepoint plus ModelPixelScale, or by a
  * ModelTransformation without rotation; PixelIsArea (the default) and PixelIsPoint; the GDAL_NODATA
- * tag (samples equal to it, and NaN, are voids). Refused, with a one-line message naming the file:
- * projected CRSs, rotated or control-point georeferencing, several bands, other compressions (JPEG,
- * ZSTD, LERC, ...), angular units other than degrees, heights outside −1000…9000 m (corrupt, other
- * units, or a nodata value without the GDAL_NODATA tag), and files that are no (or a truncated) TIFF.
+ * tag (samples equal to it, and NaN, are voids); either byte order. Refused, with a one-line message
+ * naming the file: projected CRSs, rotated or control-point georeferencing, several bands, other
+ * compressions (JPEG, ZSTD, LERC, ...), BigTIFF, angular units other than degrees, heights outside
+ * −1000…9000 m (corrupt, other units, or a nodata value without the GDAL_NODATA tag), and files that
+ * are no (or a truncated) TIFF. The TIFF library (mil.nga tiff) parses the directories and
+ * decompresses the blocks; predictors and sample conversion are done here.
+ *
+ * <p>Tiles are indexed by file name ({@link TileId#parseFileName}); each is resampled onto a square
+ * grid of samples on the tile's edges, as {@link HgtTile} holds them (see {@link #toTile}), so tiles of
+ * any resolution mix in one {@link Mosaic}. Copernicus tiles, whose last row and column stop one pixel
+ * short of the tile's edges, are joined to their neighbours' first column and row (see
+ * {@link #read(Path, java.util.function.Function)}).
  *
  * <p>Where pixels lie: with PixelIsArea the tiepoint names the corner of a pixel, so the centre of
  * column {@code c} is at longitude {@code X + (c + 0.5 − I)·Sx}; with PixelIsPoint the tiepoint names
@@ -229,6 +237,10 @@ public final class GeoTiffReader {
 
     /** {@link #readGrid} on bytes already read; {@code fileName} decides the datum by naming convention. */
     static Grid decode(String source, String fileName, byte[] bytes, Part part) {
+        if (bytes.length >= 4 && (bytes[0] == 'I' && bytes[2] == 43 && bytes[3] == 0 || bytes[0] == 'M' && bytes[2] == 0 && bytes[3] == 43)) {
+            throw new DemException(source + " is a BigTIFF, which dempano cannot read; rewrite it as a classic TIFF, "
+                    + "e.g. gdal_translate -co BIGTIFF=NO (one-degree tiles are far below 4 GB)");
+        }
         FileDirectory dir;
         try {
             TIFFImage image = TiffReader.readTiff(bytes);

@@ -318,6 +318,14 @@ class GeoTiffReaderTest {
     }
 
     @Test
+    void aBigTiffIsRefusedByName() throws IOException {
+        Path f = dir.resolve("N46E008.tif");
+        Files.write(f, new byte[] {'I', 'I', 43, 0, 8, 0, 0, 0, 16, 0, 0, 0, 0, 0, 0, 0});
+        DemException e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+        assertTrue(e.getMessage().startsWith(f + " is a BigTIFF, which dempano cannot read"), e.getMessage());
+    }
+
+    @Test
     void implausibleHeightsWithoutNodataTagAreRefused() throws IOException {
         Path f = GeoTiffTestFiles.write(dir.resolve("N46E008.tif"), srtmLike(false),
                 (r, c) -> r == 7 && c == 9 ? -32768 : plane(r, c));
