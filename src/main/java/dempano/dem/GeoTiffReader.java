@@ -116,34 +116,7 @@ public final class GeoTiffReader {
         TileId id = TileId.parseFileName(file.getFileName().toString());
         Grid g = readGrid(file);
         List<String> warnings = new ArrayList<>();
-        Grid stitched = stitch(g, id, neighbours, warnings);
-        HgtTile t = toTile(stitched, id);
-        if (warnings.isEmpty()) {
-            return t;
-        }
-        warnings.addAll(t.warnings());
-        return new HgtTile(t.id(), t.source(), t.samplesPerSide(), heights(t), t.voids(), voidMask(t), warnings)
-                .withVerticalDatum(t.verticalDatum());
-    }
-
-    private static float[] heights(HgtTile t) {
-        int n = t.samplesPerSide();
-        float[] h = new float[n * n];
-        for (int i = 0; i < h.length; i++) {
-            h[i] = t.heightMetres(i / n, i % n);
-        }
-        return h;
-    }
-
-    private static BitSet voidMask(HgtTile t) {
-        int n = t.samplesPerSide();
-        BitSet m = new BitSet();
-        for (int i = 0; i < n * n; i++) {
-            if (t.isFilledVoid(i / n, i % n)) {
-                m.set(i);
-            }
-        }
-        return m;
+        return toTile(stitch(g, id, neighbours, warnings), id, warnings);
     }
 
     /**
@@ -583,6 +556,11 @@ public final class GeoTiffReader {
      * @throws DemException if the grid does not cover the tile's centre (a file named for another tile)
      */
     public static HgtTile toTile(Grid g, TileId id) {
+        return toTile(g, id, List.of());
+    }
+
+    /** {@link #toTile(Grid, TileId)} with warnings found before (they come first in the tile's). */
+    static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings) {
         int ipd = intervalsPerDegree(Math.min(g.colSpacingDeg(), Math.abs(g.rowSpacingDeg())));
         double centreRow = g.rowOf(id.latSouthDeg() + 0.5), centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5));
         if (!(centreRow >= -1 && centreRow <= g.height() && centreCol >= -1 && centreCol <= g.width())) {
@@ -604,7 +582,7 @@ public final class GeoTiffReader {
                 h[r * n + c] = sample(g, row, cols[c]);
             }
         }
-        List<String> warnings = new ArrayList<>(2);
+        List<String> warnings = new ArrayList<>(earlierWarnings);
         String zeros = Plausibility.zeroRowsBelowLand(h, n, g.source());
         if (zeros != null) {
             warnings.add(zeros);

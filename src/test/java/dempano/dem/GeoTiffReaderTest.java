@@ -191,6 +191,19 @@ class GeoTiffReaderTest {
         assertEquals(linear(61, 8.5), again.heightMetres(0, 60), 2e-3);
     }
 
+    /** An unreadable neighbour does not fail the tile: its edge repeats the last pixels, with a warning naming both. */
+    @Test
+    void anUnreadableNeighbourLeavesTheEdgeUnjoinedWithAWarning() throws IOException {
+        writeCopernicus(60, 8, 60, 0);
+        Path broken = dir.resolve(copernicusName(60, 9));
+        Files.write(broken, new byte[] {'I', 'I', 42, 0});
+        HgtTile t = new DemDirectory(dir).tile(TileId.of(60, 8)).orElseThrow();
+        assertEquals(linear(61, 8 + 59.0 / 60), t.heightMetres(0, 120), 2e-3);
+        assertEquals(1, t.warnings().size(), t.warnings().toString());
+        assertTrue(t.warnings().get(0).startsWith(dir.resolve(copernicusName(60, 8)) + ": edge towards N60E009 not joined ("
+                + broken + " is not a readable TIFF file"), t.warnings().get(0));
+    }
+
     private static double linear(double latDeg, double lonDeg) {
         return 1000 + 500 * (latDeg - 60) + 200 * (lonDeg - 8);
     }
