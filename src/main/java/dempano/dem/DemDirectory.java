@@ -206,9 +206,12 @@ public final class DemDirectory implements DemSource {
             java.nio.file.attribute.BasicFileAttributes a =
                     Files.readAttributes(file, java.nio.file.attribute.BasicFileAttributes.class);
             return java.util.List.of(a.lastModifiedTime(), a.size(), String.valueOf(a.fileKey()));
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new DemException("tile " + TileId.parseFileName(file.getFileName().toString()) + ": " + file
+                    + " is gone (removed since the folder was indexed)", e);
         } catch (IOException e) {
             throw new DemException("tile " + TileId.parseFileName(file.getFileName().toString()) + ": " + file
-                    + " cannot be read (" + e + ")", e);
+                    + " cannot be read (" + e.getMessage() + ")", e);
         }
     }
 

@@ -153,6 +153,16 @@ class PriorityDemTest {
     }
 
     @Test
+    void aTileFileRemovedAfterIndexingIsReportedByName() throws IOException {
+        Path hgt = HgtTestFiles.write(dir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 100));
+        DemDirectory d = new DemDirectory(dir);
+        assertEquals(100, d.tile(WEST).orElseThrow().heightMetres(5, 5));
+        Files.delete(hgt);
+        DemException e = assertThrows(DemException.class, () -> d.tile(WEST));
+        assertEquals("tile N46E008: " + hgt + " is gone (removed since the folder was indexed)", e.getMessage());
+    }
+
+    @Test
     void anHgtAndAGeoTiffForOneTileInOneDirectoryAreAmbiguous() throws IOException {
         HgtTestFiles.write(dir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 100));
         GeoTiffTestFiles.write(dir.resolve("N46E008.tif"), GeoTiffTestFiles.geographic(121, 121, 8, 47, 1 / 120.0, 1 / 120.0, true),
