@@ -62,6 +62,14 @@ public final class PanoramaRenderer implements AutoCloseable {
     /** Name of the CPU reference renderer, as metadata reports it. */
     public static final String REFERENCE_RENDERER = "dempano CPU reference (horizon sweep, double precision)";
 
+    /** Per tile used, the sources that served it (see {@link Mosaic#tileSources()}). */
+    private static List<PanoramaMetadata.TileSource> demSources(Mosaic mosaic) {
+        List<PanoramaMetadata.TileSource> out = new ArrayList<>();
+        mosaic.tileSources().forEach((id, list) -> list.forEach(c ->
+                out.add(new PanoramaMetadata.TileSource(id.name(), c.source(), c.verticalDatum(), c.samples()))));
+        return out;
+    }
+
     /**
      * Opens a renderer that needs no OpenGL: the exact CPU reference
      * ({@link dempano.reference.ReferenceRenderer}). Same requests and outputs; the depth mode,
@@ -106,7 +114,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
         t = lap(timings, "tiles", t);
         long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
-        MemoryEstimate.of(req, gl != null, 2 * samplesPerTile * mosaic.tilesUsed().size())
+        MemoryEstimate.of(req, gl != null, Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
                 .check(Runtime.getRuntime().maxMemory());
 
         Viewpoint requested = Double.isNaN(req.altitudeMetres())
@@ -260,7 +268,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
                 req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), drawing.nearMetres(), drawing.farMetres(),
                 drawing.views(), drawing.viewWidthPx(), drawing.viewHeightPx(), used, missing, warnings, timings, glRenderer(),
-                drawing.lodErrorPx(), drawing.triangles(), adjusted.move());
+                drawing.lodErrorPx(), drawing.triangles(), adjusted.move(), demSources(mosaic));
         // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
         return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
     }

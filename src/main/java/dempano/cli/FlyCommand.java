@@ -20,8 +20,9 @@ public final class FlyCommand implements Callable<Integer> {
     Double latDeg;
     @Option(names = "--lon", description = "Start longitude, degrees east. Default: the demo scene's.")
     Double lonDeg;
-    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of SRTM tiles. Default: the demo DEM.")
-    Path demDir;
+    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of DEM tiles (.hgt, GeoTIFF); repeatable, "
+            + "in priority order, as for rendering. Default: the demo DEM.")
+    java.util.List<Path> demDirs;
     @Option(names = "--above-ground-m", description = "Start height above the DEM, metres (default: ${DEFAULT-VALUE}).", defaultValue = "300")
     double aboveGroundMetres;
     @Option(names = "--range-km", description = "Terrain built within this distance of the start, km (default: ${DEFAULT-VALUE}).", defaultValue = "40")
@@ -57,8 +58,9 @@ public final class FlyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        boolean demo = latDeg == null && lonDeg == null && demDir == null;
-        if (!demo && (latDeg == null || lonDeg == null || demDir == null)) {
+        boolean noDem = demDirs == null || demDirs.isEmpty();
+        boolean demo = latDeg == null && lonDeg == null && noDem;
+        if (!demo && (latDeg == null || lonDeg == null || noDem)) {
             throw new IllegalArgumentException("give --lat, --lon and --dem-dir (or none of them, for the demo scene)");
         }
         if (frames < 0 || (frames > 0 && screenshot == null)) {
@@ -71,9 +73,9 @@ public final class FlyCommand implements Callable<Integer> {
         }
         new Refraction(refraction); // validates
         OnscreenRenderer.checkDisplay(); // before the demo DEM is written or jME started
-        Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
+        java.util.List<Path> dirs = demo ? java.util.List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
-        return OnscreenRenderer.fly(new OnscreenRenderer.Options(dir, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
+        return OnscreenRenderer.fly(new OnscreenRenderer.Options(dirs, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
                 pitchDeg, speed, frames, screenshot, !noDialog, wireframe, debugColours, exaggeration, refraction, width, height,
                 outDir, panoramaAtEnd));
     }

@@ -18,6 +18,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.EnumSet;
+import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
@@ -36,8 +37,10 @@ public final class Main implements Callable<Integer> {
     Double latDeg;
     @Option(names = "--lon", description = "Viewpoint longitude, degrees east (-180..180). Default: the demo scene's.")
     Double lonDeg;
-    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of SRTM tiles (N46E008.hgt, *.hgt.zip). Default: the demo DEM.")
-    Path demDir;
+    @Option(names = "--dem-dir", paramLabel = "DIR", description = "Directory of DEM tiles: SRTM (N46E008.hgt, *.hgt.zip) "
+            + "and GeoTIFFs in lat/lon (N46E008.tif, Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif). Repeatable, in priority "
+            + "order: where the first has a void or no tile, the next fills it. Default: the demo DEM.")
+    List<Path> demDirs;
     @Option(names = "--out", paramLabel = "PREFIX", description = "Output prefix (default: ${DEFAULT-VALUE}).", defaultValue = "build/panorama/panorama")
     String out;
     @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}).", defaultValue = "20")
@@ -155,14 +158,15 @@ public final class Main implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        boolean demo = latDeg == null && lonDeg == null && demDir == null;
+        boolean noDem = demDirs == null || demDirs.isEmpty();
+        boolean demo = latDeg == null && lonDeg == null && noDem;
         if (!demo && (latDeg == null || lonDeg == null)) {
             throw new IllegalArgumentException("give both --lat and --lon (or neither, for the demo scene)");
         }
-        if (!demo && demDir == null) {
+        if (!demo && noDem) {
             throw new IllegalArgumentException("--dem-dir is needed with --lat/--lon");
         }
-        Path dir = demo ? DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR) : demDir;
+        List<Path> dirs = demo ? List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         double range = rangeKm != null ? rangeKm * 1000 : (demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES);
         Set<Layer> wanted = EnumSet.noneOf(Layer.class);
@@ -191,8 +195,13 @@ public final class Main implements Callable<Integer> {
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
-        DemDirectory dem = new DemDirectory(dir);
-        dem.warnings().forEach(w -> System.err.println("  warning: " + w));
+        List<DemDirectory> demSources = new java.util.ArrayList<>();
+        for (Path d : dirs) {
+            DemDirectory one = new DemDirectory(d);
+            one.warnings().forEach(w -> System.err.println("  warning: " + w));
+            demSources.add(one);
+        }
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources);
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;
@@ -237,7 +246,7 @@ public final class Main implements Callable<Integer> {
         // after any failure the previous outputs stay as they were.
         try (OutputSet set = OutputSet.open(out)) {
             set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
-            System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dir);
+            System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dem.describe());
             java.util.List<String> table = new java.util.ArrayList<>();
             try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
                 System.err.println("  renderer: " + r.glRenderer());

@@ -14,8 +14,11 @@ import java.util.stream.Stream;
 
 /**
  * Tiles from one directory: files named like {@code N46E008.hgt}, {@code n46e008.hgt},
- * {@code N19W155v2.3a.hgt.zip}. The directory is indexed once; loaded tiles are kept in a small
- * least-recently-used cache so a pipeline rendering many nearby panoramas reads each file once.
+ * {@code N19W155v2.3a.hgt.zip}, and GeoTIFFs named like {@code N46E008.tif} or
+ * {@code Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif} (read by {@link GeoTiffReader}, resampled
+ * onto the tile's grid). The directory is indexed once; loaded tiles are kept in a small
+ * least-recently-used cache so a pipeline rendering many nearby panoramas reads each file once. A
+ * cached tile whose file changed since (modification time, size or inode) is read again.
  *
  * <p>Indexing never fails on the folder's content. Files named {@code *.hgt} / {@code *.hgt.zip}
  * that are no valid tile name ({@code N99E999.hgt}, {@code foo.hgt}) are ignored with one
@@ -38,7 +41,11 @@ public final class DemDirectory implements DemSource {
     private final Map<TileId, List<Candidate>> candidates;
     private final Map<TileId, Path> files;
     private final List<String> warnings;
-    private final Map<TileId, HgtTile> cache;
+    private final Map<TileId, Cached> cache;
+
+    /** A loaded tile and the file's state when it was read: a changed file is read again. */
+    private record Cached(HgtTile tile, Object stamp) {
+    }
 
     public DemDirectory(Path directory) {
         this(directory, DEFAULT_CACHED_TILES);
@@ -76,11 +83,11 @@ public final class DemDirectory implements DemSource {
         this.files = Collections.unmodifiableMap(usable);
         this.warnings = junk.isEmpty() ? List.of() : List.of("ignored " + junk.size() + " file" + (junk.size() == 1 ? "" : "s")
                 + " in " + directory + " named like tiles but with no valid tile name " + junk
-                + " (expected e.g. N46E008.hgt, S16E166.hgt.zip, N19W155v2.3a.hgt.zip)");
+                + " (" + TileId.expectedNames() + ")");
         int capacity = Math.max(1, cachedTiles);
         this.cache = new LinkedHashMap<>(capacity * 2, 0.75f, true) {
             @Override
-            protected boolean removeEldestEntry(Map.Entry<TileId, HgtTile> eldest) {
+            protected boolean removeEldestEntry(Map.Entry<TileId, Cached> eldest) {
                 return size() > capacity;
             }
         };
@@ -150,17 +157,62 @@ public final class DemDirectory implements DemSource {
         if (found.get(0).problem() != null) {
             throw new DemException("tile " + id + ": " + file + " " + found.get(0).problem());
         }
+        Object stamp = stamp(file);
+        if (TileId.isGeoTiffFileName(file.getFileName().toString())) {
+            // Its edges come from the neighbours' files (see GeoTiffReader.read): their changes count too.
+            stamp = List.of(stamp, neighbourStamp(TileId.of(id.latSouthDeg(), id.lonWestDeg() + 1)),
+                    id.latSouthDeg() > -90 ? neighbourStamp(TileId.of(id.latSouthDeg() - 1, id.lonWestDeg())) : "",
+                    id.latSouthDeg() > -90 ? neighbourStamp(TileId.of(id.latSouthDeg() - 1, id.lonWestDeg() + 1)) : "");
+        }
         synchronized (cache) {
-            HgtTile cached = cache.get(id);
-            if (cached != null) {
-                return Optional.of(cached);
+            Cached cached = cache.get(id);
+            if (cached != null && cached.stamp().equals(stamp)) {
+                return Optional.of(cached.tile());
             }
         }
-        HgtTile tile = HgtReader.read(file); // outside the lock: reading takes a while
+        // Outside the lock: reading takes a while.
+        HgtTile tile = TileId.isGeoTiffFileName(file.getFileName().toString())
+                ? GeoTiffReader.read(file, this::geoTiffOf) : HgtReader.read(file);
         synchronized (cache) {
-            cache.put(id, tile);
+            cache.put(id, new Cached(tile, stamp));
         }
         return Optional.of(tile);
+    }
+
+    private Object neighbourStamp(TileId id) {
+        Path p = geoTiffOf(id);
+        if (p == null) {
+            return "";
+        }
+        try {
+            return stamp(p);
+        } catch (DemException e) {
+            return "unreadable";
+        }
+    }
+
+    /** The one usable GeoTIFF of a tile, or null: a GeoTIFF tile's neighbours complete its eastern and southern edges. */
+    private Path geoTiffOf(TileId id) {
+        Path p = files.get(id);
+        return p != null && TileId.isGeoTiffFileName(p.getFileName().toString()) ? p : null;
+    }
+
+    /**
+     * What identifies a file's content cheaply: its modification time, size and file key (inode), so
+     * a tile replaced or rewritten since it was cached is read again.
+     */
+    private static Object stamp(Path file) {
+        try {
+            java.nio.file.attribute.BasicFileAttributes a =
+                    Files.readAttributes(file, java.nio.file.attribute.BasicFileAttributes.class);
+            return java.util.List.of(a.lastModifiedTime(), a.size(), String.valueOf(a.fileKey()));
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new DemException("tile " + TileId.parseFileName(file.getFileName().toString()) + ": " + file
+                    + " is gone (removed since the folder was indexed)", e);
+        } catch (IOException e) {
+            throw new DemException("tile " + TileId.parseFileName(file.getFileName().toString()) + ": " + file
+                    + " cannot be read (" + e.getMessage() + ")", e);
+        }
     }
 
     @Override

@@ -2,7 +2,10 @@ package dempano.dem;
 
 import java.util.Optional;
 
-/** Where tiles come from: a directory of .hgt files, or tiles held in memory. Implementations are thread-safe. */
+/**
+ * Where tiles come from: a directory of .hgt and GeoTIFF files ({@link DemDirectory}), several sources in
+ * priority ({@link PriorityDem}), or tiles held in memory. Implementations are thread-safe.
+ */
 public interface DemSource {
     /**
      * The tile, loaded and void-filled, or empty if this source has no data for it.

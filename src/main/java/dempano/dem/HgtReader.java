@@ -77,7 +77,7 @@ public final class HgtReader {
         if (needles != null) {
             warnings.add(needles);
         }
-        return new HgtTile(id, source, n, heights, voids, mask, warnings);
+        return new HgtTile(id, source, n, heights, voids, mask, warnings).withVerticalDatum(DemContribution.EGM96);
     }
 
     private static int samplesForLength(String source, long length) {

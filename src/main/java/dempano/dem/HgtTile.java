@@ -23,6 +23,9 @@ public final class HgtTile {
     private final VoidReport voids;
     private final java.util.BitSet filledVoids;
     private final java.util.List<String> warnings;
+    private final String verticalDatum;
+    /** Null: one contribution, this tile's own source (computed on demand). */
+    private final java.util.List<DemContribution> contributions;
 
     HgtTile(TileId id, String source, int samplesPerSide, float[] heightsMetres, VoidReport voids) {
         this(id, source, samplesPerSide, heightsMetres, voids, new java.util.BitSet());
@@ -54,6 +57,32 @@ public final class HgtTile {
         this.wholeMetres = whole;
         this.heightsMetres = whole == null ? heightsMetres : null;
         this.voids = Objects.requireNonNull(voids);
+        this.verticalDatum = DemContribution.UNKNOWN;
+        this.contributions = null;
+    }
+
+    /** A copy sharing the (immutable) heights, with another datum and contributions. */
+    private HgtTile(HgtTile t, String verticalDatum, java.util.List<DemContribution> contributions) {
+        this.id = t.id;
+        this.source = t.source;
+        this.samplesPerSide = t.samplesPerSide;
+        this.wholeMetres = t.wholeMetres;
+        this.heightsMetres = t.heightsMetres;
+        this.voids = t.voids;
+        this.filledVoids = t.filledVoids;
+        this.warnings = t.warnings;
+        this.verticalDatum = Objects.requireNonNull(verticalDatum);
+        this.contributions = contributions == null ? null : java.util.List.copyOf(contributions);
+    }
+
+    /** This tile with its heights' vertical datum set (see {@link DemContribution#verticalDatum()}). */
+    HgtTile withVerticalDatum(String datum) {
+        return new HgtTile(this, datum, contributions);
+    }
+
+    /** This tile with the sources its samples came from (for tiles merged from several sources). */
+    HgtTile withContributions(java.util.List<DemContribution> sources) {
+        return new HgtTile(this, verticalDatum, sources);
     }
 
     /**
@@ -95,9 +124,37 @@ public final class HgtTile {
         return wholeMetres != null ? wholeMetres[i] : heightsMetres[i];
     }
 
+    /** Bytes the heights take: 2 per sample when all are whole metres in int16 range, else 4. */
+    public long heightBytes() {
+        return (wholeMetres != null ? 2L : 4L) * samplesPerSide * samplesPerSide;
+    }
+
     /** True if the sample was a void, its height now interpolated. */
     public boolean isFilledVoid(int row, int col) {
         return filledVoids.get(row * samplesPerSide + col);
+    }
+
+    /**
+     * The vertical datum of the heights: {@code EGM96} for .hgt files, from the GeoTIFF keys or the
+     * Copernicus naming for GeoTIFFs, {@code unknown} for synthetic tiles; for a tile merged from
+     * several sources, the primary source's (each source's is in {@link #contributions()}).
+     */
+    public String verticalDatum() {
+        return verticalDatum;
+    }
+
+    /**
+     * Which sources served this tile's samples and how many each: one entry (this tile's file, its
+     * valid samples) for a tile read from one file; the primary source first, then the sources that
+     * filled its voids, for a tile merged by {@link PriorityDem}. Samples are counted on this tile's
+     * grid; the rest (voids no source had) were interpolated and are in {@link #voids()}.
+     */
+    public java.util.List<DemContribution> contributions() {
+        if (contributions != null) {
+            return contributions;
+        }
+        long valid = (long) samplesPerSide * samplesPerSide - filledVoids.cardinality();
+        return java.util.List.of(new DemContribution(source, verticalDatum, valid));
     }
 
     /** What void filling found and did. */

@@ -38,6 +38,7 @@ public final class Mosaic {
     private final List<TileId> tilesMissing;
     private final List<String> warnings;
     private final String sourceDescription;
+    private final java.util.Map<TileId, List<DemContribution>> tileSources;
 
     /** A sample whose height was interpolated over a void. */
     public static final int FLAG_FILLED_VOID = 1;
@@ -62,6 +63,15 @@ public final class Mosaic {
         this.tilesMissing = Collections.unmodifiableList(missing);
         this.warnings = Collections.unmodifiableList(warnings);
         this.sourceDescription = sourceDescription;
+        java.util.Map<TileId, List<DemContribution>> bySource = new java.util.LinkedHashMap<>();
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                if (t != null) {
+                    bySource.put(t.id(), t.contributions());
+                }
+            }
+        }
+        this.tileSources = Collections.unmodifiableMap(bySource);
     }
 
     /**
@@ -123,6 +133,10 @@ public final class Mosaic {
                     + " has no usable file for " + (missing.size() == 1 ? "it" : "them") + " (--missing-tiles error)");
         }
         warnings.addAll(Plausibility.edgeMismatches(tiles));
+        String datums = mixedDatums(tiles);
+        if (datums != null) {
+            warnings.add(datums);
+        }
         if (!missing.isEmpty()) {
             warnings.add("no data for " + missing + " in " + source.describe() + ": treated as sea level (0 m)");
         }
@@ -135,6 +149,28 @@ public final class Mosaic {
                     + " tiles at " + ipd + " samples per degree is too large; reduce the range");
         }
         return new Mosaic(sel, ipd, tiles, seaLevel, used, missing, warnings, source.describe());
+    }
+
+    /**
+     * A warning when the tiles' heights refer to different vertical datums (Copernicus' EGM2008 beside
+     * SRTM's EGM96), or null. Known datums only: "unknown" is compatible with anything.
+     */
+    static String mixedDatums(HgtTile[][] tiles) {
+        java.util.Set<String> datums = new java.util.TreeSet<>();
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                if (t != null) {
+                    for (DemContribution c : t.contributions()) {
+                        if (c.samples() > 0 && !c.verticalDatum().equals(DemContribution.UNKNOWN)) {
+                            datums.add(c.verticalDatum());
+                        }
+                    }
+                }
+            }
+        }
+        return datums.size() < 2 ? null : "the DEM heights refer to different vertical datums " + datums
+                + ", used as they are: they differ by the difference of the geoid models (mostly under 1 m, a few metres "
+                + "in places)";
     }
 
     /**
@@ -298,6 +334,25 @@ public final class Mosaic {
     /** Tiles needed but absent (held as sea level). */
     public List<TileId> tilesMissing() {
         return tilesMissing;
+    }
+
+    /** Bytes the heights of the tiles used take (float tiles, e.g. Copernicus, 4 per sample, SRTM 2). */
+    public long tileBytes() {
+        long sum = 0;
+        for (HgtTile[] row : tiles) {
+            for (HgtTile t : row) {
+                sum += t == null ? 0 : t.heightBytes();
+            }
+        }
+        return sum;
+    }
+
+    /**
+     * For each tile used (in {@link #tilesUsed()} order), which sources served how many of its samples
+     * and their vertical datums (see {@link HgtTile#contributions()}).
+     */
+    public java.util.Map<TileId, List<DemContribution>> tileSources() {
+        return tileSources;
     }
 
     /** The DEM source's description (e.g. its folder), for messages. */

@@ -16,6 +16,14 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
     // then .hgt or .hgt.zip.
     private static final Pattern FILE_NAME =
             Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.hgt(\\.zip)?$", Pattern.CASE_INSENSITIVE);
+    // GeoTIFF tiles: N46E008.tif (as gdal_translate output is usually named, suffix allowed) and the
+    // Copernicus DEM naming, Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif (GLO-30; _30_ for GLO-90).
+    private static final Pattern TIFF_NAME =
+            Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.tiff?$", Pattern.CASE_INSENSITIVE);
+    private static final Pattern COPERNICUS_NAME = Pattern.compile(
+            "^Copernicus_DSM(?:_COG)?_\\d+_([NS])(\\d{2})_00_([EW])(\\d{3})_00_DEM\\.tiff?$", Pattern.CASE_INSENSITIVE);
+    private static final String EXPECTED = "expected e.g. N46E008.hgt, S16E166.hgt.zip, N19W155v2.3a.hgt.zip, "
+            + "N46E008.tif or Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif";
 
     public TileId {
         if (latSouthDeg < -90 || latSouthDeg > 89 || lonWestDeg < -180 || lonWestDeg > 179) {
@@ -39,15 +47,21 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
     }
 
     /**
-     * Parses a tile file name ({@code N46E008.hgt}, {@code n46e008.hgt}, {@code N19W155v2.3a.hgt.zip}).
+     * Parses a tile file name ({@code N46E008.hgt}, {@code n46e008.hgt}, {@code N19W155v2.3a.hgt.zip},
+     * GeoTIFFs {@code N46E008.tif} and {@code Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif}).
      *
-     * @throws DemException if the name is not an SRTM tile name
+     * @throws DemException if the name is not a tile name
      */
     public static TileId parseFileName(String fileName) {
         Matcher m = FILE_NAME.matcher(fileName);
         if (!m.matches()) {
-            throw new DemException("'" + fileName + "' is not an SRTM tile file name (expected e.g. N46E008.hgt, "
-                    + "S16E166.hgt.zip or N19W155v2.3a.hgt.zip)");
+            m = TIFF_NAME.matcher(fileName);
+        }
+        if (!m.matches()) {
+            m = COPERNICUS_NAME.matcher(fileName);
+        }
+        if (!m.matches()) {
+            throw new DemException("'" + fileName + "' is not a tile file name (" + EXPECTED + ")");
         }
         int lat = Integer.parseInt(m.group(2));
         int lon = Integer.parseInt(m.group(4));
@@ -62,9 +76,6 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
 
     /** True if a file name parses as a tile name (of a tile on the globe: not {@code N99E999.hgt}). */
     public static boolean isTileFileName(String fileName) {
-        if (!FILE_NAME.matcher(fileName).matches()) {
-            return false;
-        }
         try {
             parseFileName(fileName);
             return true;
@@ -73,10 +84,24 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
         }
     }
 
-    /** True if a file name ends in {@code .hgt} or {@code .hgt.zip}, any case: meant as a tile, valid or not. */
+    /**
+     * True if a file name ends in {@code .hgt}, {@code .hgt.zip}, {@code .tif} or {@code .tiff}, any case:
+     * meant as a tile, valid or not.
+     */
     public static boolean looksLikeTileFile(String fileName) {
         String lower = fileName.toLowerCase(Locale.ROOT);
-        return lower.endsWith(".hgt") || lower.endsWith(".hgt.zip");
+        return lower.endsWith(".hgt") || lower.endsWith(".hgt.zip") || isGeoTiffFileName(lower);
+    }
+
+    /** True if a file name ends in {@code .tif} or {@code .tiff}, any case. */
+    public static boolean isGeoTiffFileName(String fileName) {
+        String lower = fileName.toLowerCase(Locale.ROOT);
+        return lower.endsWith(".tif") || lower.endsWith(".tiff");
+    }
+
+    /** What tile file names look like, for messages. */
+    static String expectedNames() {
+        return EXPECTED;
     }
 
     /** The canonical name, e.g. {@code N46E008}, {@code S16E166}, {@code N00W001}. */

@@ -218,6 +218,16 @@ public final class PanoramaWriter {
                 : "not rendered (colour only)");
         doc.put("tilesUsed", m.tilesUsed());
         doc.put("tilesMissing", m.tilesMissing());
+        List<Map<String, Object>> sources = new ArrayList<>();
+        for (PanoramaMetadata.TileSource ts : m.demSources()) {
+            Map<String, Object> one = new LinkedHashMap<>();
+            one.put("tile", ts.tile());
+            one.put("source", ts.source());
+            one.put("verticalDatum", ts.verticalDatum());
+            one.put("samples", ts.samples());
+            sources.add(one);
+        }
+        doc.put("demSources", sources);
         doc.put("warnings", m.warnings());
         doc.put("timingsMillis", m.timingsMillis());
         doc.put("glRenderer", m.glRenderer());

@@ -31,6 +31,8 @@ import java.util.Map;
  *                              intersects the full-resolution surface directly)
  * @param viewpointMove         where the automatic corrections moved the eye from and to (the fields above
  *                              describe the viewpoint used); null when none was asked for
+ * @param demSources            per tile used, each source that served samples of it, with the vertical datum
+ *                              of its heights (several per tile where later DEM sources filled voids)
  */
 public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
                                double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
@@ -38,7 +40,19 @@ public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevat
                                double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
                                List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
                                Map<String, Double> timingsMillis, String glRenderer,
-                               double lodErrorPx, long terrainTriangles, dempano.geo.ViewpointMove viewpointMove) {
+                               double lodErrorPx, long terrainTriangles, dempano.geo.ViewpointMove viewpointMove,
+                               List<TileSource> demSources) {
+    /**
+     * One source's share of one tile.
+     *
+     * @param tile          tile name, e.g. N46E008
+     * @param source        the file that served the samples
+     * @param verticalDatum EGM96, EGM2008, EPSG:nnnn or unknown
+     * @param samples       samples of the tile (on its grid) served by this file
+     */
+    public record TileSource(String tile, String source, String verticalDatum, long samples) {
+    }
+
     /** The earth model. */
     public static final String EARTH_MODEL = "WGS84 ellipsoid (exact ECEF/ENU), heights above sea level taken as ellipsoidal";
 }

@@ -54,7 +54,7 @@ public final class OnscreenRenderer extends SimpleApplication {
     /**
      * What to fly over and how.
      *
-     * @param demDir            tiles (the demo DEM if null)
+     * @param demDirs           tile directories in priority order (see {@link dempano.dem.PriorityDem})
      * @param aboveGroundMetres start height above the DEM
      * @param rangeMetres       terrain built within this distance of the start
      * @param frames            scripted mode: fly this many frames (1/30 s each) along the heading, then
@@ -62,7 +62,7 @@ public final class OnscreenRenderer extends SimpleApplication {
      * @param outDir            where panoramas and screenshots go
      * @param panoramaAtEnd     scripted mode: also press P at the end and wait for the panorama
      */
-    public record Options(Path demDir, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
+    public record Options(List<Path> demDirs, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
                           double headingDeg, double pitchDeg, double speedMetresPerSecond, int frames, Path screenshot,
                           boolean showSettings, boolean wireframe, boolean debugAids, double exaggeration,
                           double refractionCoefficient, int widthPx, int heightPx, Path outDir, boolean panoramaAtEnd) {
@@ -179,7 +179,9 @@ public final class OnscreenRenderer extends SimpleApplication {
     public void simpleInitApp() {
         windowOpened = true;
         try {
-            DemDirectory dem = new DemDirectory(opt.demDir());
+            List<DemDirectory> dirs = new ArrayList<>();
+            opt.demDirs().forEach(d -> dirs.add(new DemDirectory(d)));
+            dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(dirs);
             mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.SEA_LEVEL);
             start = Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres());
             frame = start.eyeFrame();
@@ -375,9 +377,10 @@ public final class OnscreenRenderer extends SimpleApplication {
             return;
         }
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx4g",
-                "-cp", System.getProperty("java.class.path"), "dempano.cli.Main", "--dem-dir", opt.demDir().toString(),
+                "-cp", System.getProperty("java.class.path"), "dempano.cli.Main",
                 "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(geo[2]),
                 "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString()));
+        opt.demDirs().forEach(d -> cmd.addAll(List.of("--dem-dir", d.toString())));
         status = "panorama: rendering at " + String.format(Locale.ROOT, "%.5f, %.5f, %.0f m", geo[0], geo[1], geo[2]) + " …";
         Thread th = new Thread(() -> {
             try {

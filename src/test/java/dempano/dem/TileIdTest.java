@@ -22,6 +22,10 @@ class TileIdTest {
             "S01W180.hgt, -1, -180, S01W180",
             "N89E179.hgt, 89, 179, N89E179",
             "S90W180.HGT, -90, -180, S90W180",
+            "N46E008.tif, 46, 8, N46E008",
+            "s16e166_dem.TIFF, -16, 166, S16E166",
+            "Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif, 46, 8, N46E008",
+            "Copernicus_DSM_COG_30_S16_00_W155_00_DEM.tif, -16, -155, S16W155",
     })
     void parsesNames(String file, int lat, int lon, String canonical) {
         TileId id = TileId.parseFileName(file);
@@ -30,7 +34,7 @@ class TileIdTest {
     }
 
     @ParameterizedTest
-    @CsvSource({"N46E008.tif", "X46E008.hgt", "N4E008.hgt", "N46E08.hgt", "N90E000.hgt", "N10E180.hgt",
+    @CsvSource({"N46E008.png", "Copernicus_DSM_COG_10_N46_00_E008_DEM.tif", "X46E008.hgt", "N4E008.hgt", "N46E08.hgt", "N90E000.hgt", "N10E180.hgt",
             "S91E000.hgt", "N10W181.hgt", "N46E008.zip", "N46E008.hgt.gz"})
     void rejectsBadNames(String file) {
         DemException e = assertThrows(DemException.class, () -> TileId.parseFileName(file));

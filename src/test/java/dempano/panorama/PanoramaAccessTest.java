@@ -30,7 +30,7 @@ class PanoramaAccessTest {
             }
         }
         PanoramaMetadata m = new PanoramaMetadata(46, 8, 1000, 0, 1000, 2, 1002, 100_000, 0.13, DepthMode.SHADER_RANGE,
-                1, 100_000, 8, 100, 100, List.of(), List.of(), List.of(), Map.of(), "test", 0, 0, null);
+                1, 100_000, 8, 100, 100, List.of(), List.of(), List.of(), Map.of(), "test", 0, 0, null, List.of());
         return new Panorama(G, colour ? argb : null, distance ? d : null, Map.of(), m);
     }
 

@@ -1,0 +1,642 @@
+package dempano.dem;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import mil.nga.tiff.FieldTagType;
+import mil.nga.tiff.FileDirectory;
+import mil.nga.tiff.TIFFImage;
+import mil.nga.tiff.TiffReader;
+
+/**
+ * Reads GeoTIFF DEMs in geographic coordinates (latitude/longitude in degrees, e.g. EPSG:4326) and
+ * resamples them onto the one-degree tile grid that {@link Mosaic} stitches.
+ *
+ * <p>Supported: one band of int8/uint8/int16/uint16/int32/uint32/float32/float64 heights in metres;
+ * uncompressed, LZW, Deflate and PackBits compression, horizontal (2) and floating-point (3)
+ * predictors; striped and tiled layouts; Cloud-Optimized GeoTIFFs (the full-resolution image is read,
+ * overviews are ignored); georeferencing by one ModelTiepoint plus ModelPixelScale, or by a
+ * ModelTransformation without rotation; PixelIsArea (the default) and PixelIsPoint; the GDAL_NODATA
+ * tag (samples equal to it, and NaN, are voids); either byte order. Refused, with a one-line message
+ * naming the file: projected CRSs, rotated or control-point georeferencing, several bands, other
+ * compressions (JPEG, ZSTD, LERC, ...), BigTIFF, angular units other than degrees, heights outside
+ * −1000…9000 m (corrupt, other units, or a nodata value without the GDAL_NODATA tag), and files that
+ * are no (or a truncated) TIFF. The TIFF library (mil.nga tiff) parses the directories and
+ * decompresses the blocks; predictors and sample conversion are done here.
+ *
+ * <p>Tiles are indexed by file name ({@link TileId#parseFileName}); each is resampled onto a square
+ * grid of samples on the tile's edges, as {@link HgtTile} holds them (see {@link #toTile}), so tiles of
+ * any resolution mix in one {@link Mosaic}. Copernicus tiles, whose last row and column stop one pixel
+ * short of the tile's edges, are joined to their neighbours' first column and row (see
+ * {@link #read(Path, java.util.function.Function)}).
+ *
+ * <p>Where pixels lie: with PixelIsArea the tiepoint names the corner of a pixel, so the centre of
+ * column {@code c} is at longitude {@code X + (c + 0.5 − I)·Sx}; with PixelIsPoint the tiepoint names
+ * the pixel's centre, {@code X + (c − I)·Sx}. The height of a pixel is the height at its centre.
+ */
+public final class GeoTiffReader {
+    /** The finest tile grid a GeoTIFF is resampled onto: 1 arc-second (SRTM1, Copernicus GLO-30). */
+    public static final int MAX_INTERVALS_PER_DEGREE = 3600;
+
+    // GeoKey ids (GeoTIFF 1.1 spec).
+    private static final int GT_MODEL_TYPE = 1024, GT_RASTER_TYPE = 1025, GEOGRAPHIC_TYPE = 2048,
+            GEOG_ANGULAR_UNITS = 2054, PROJECTED_CS_TYPE = 3072, VERTICAL_CS_TYPE = 4096, VERTICAL_CITATION = 4097,
+            VERTICAL_DATUM = 4098;
+    private static final int TAG_GEO_DOUBLE_PARAMS = 34736, TAG_GEO_ASCII_PARAMS = 34737;
+    private static final int MODEL_PROJECTED = 1, MODEL_GEOGRAPHIC = 2, RASTER_PIXEL_IS_POINT = 2;
+    private static final int USER_DEFINED = 32767;
+
+    private GeoTiffReader() {
+    }
+
+    /**
+     * A GeoTIFF's full-resolution heights and where its pixel centres lie.
+     *
+     * @param source          the file, for messages
+     * @param width           columns
+     * @param height          rows
+     * @param heightsMetres   row-major heights, metres; NaN for voids (nodata)
+     * @param lonOfCol0Deg    longitude of the centre of column 0, degrees
+     * @param latOfRow0Deg    latitude of the centre of row 0, degrees
+     * @param colSpacingDeg   longitude step per column, degrees (&gt; 0: column 0 is west)
+     * @param rowSpacingDeg   latitude step per row, degrees (&gt; 0: row 0 is north, the usual case)
+     * @param pixelIsPoint    the raster type the file declared (already applied to the two origins)
+     * @param verticalDatum   see {@link DemContribution#verticalDatum()}
+     * @param geographicEpsg  the geographic CRS's EPSG code (4326 for WGS 84), 32767 if user-defined
+     */
+    public record Grid(String source, int width, int height, float[] heightsMetres, double lonOfCol0Deg,
+                       double latOfRow0Deg, double colSpacingDeg, double rowSpacingDeg, boolean pixelIsPoint,
+                       String verticalDatum, int geographicEpsg) {
+        /** Fractional column of a longitude (column centres are integers). */
+        public double colOf(double lonDeg) {
+            return (lonDeg - lonOfCol0Deg) / colSpacingDeg;
+        }
+
+        /** Fractional row of a latitude (row centres are integers). */
+        public double rowOf(double latDeg) {
+            return (latOfRow0Deg - latDeg) / rowSpacingDeg;
+        }
+
+        /** The longitude 360° away from lonDeg that is nearest the grid's centre. */
+        double unwrap(double lonDeg) {
+            double centre = lonOfCol0Deg + (width - 1) * colSpacingDeg / 2;
+            return lonDeg + 360 * Math.rint((centre - lonDeg) / 360);
+        }
+    }
+
+    /**
+     * Reads a GeoTIFF tile named like {@code N46E008.tif} or
+     * {@code Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif}, resampled onto that tile's grid (see
+     * {@link #toTile}) and void-filled.
+     *
+     * @throws DemException naming the file and the problem
+     */
+    public static HgtTile read(Path file) {
+        return read(file, t -> null);
+    }
+
+    /**
+     * Like {@link #read(Path)}, but where the file's pixels stop short of the tile's eastern or southern
+     * edge (Copernicus tiles: the edge pixels are the neighbours'), the samples between the last pixel
+     * centres and the edge are interpolated towards the neighbouring GeoTIFFs' first column / row
+     * (only those are decoded) instead of repeating the last pixels. Without a neighbour, or when it
+     * cannot be read, the last pixels are repeated (and a warning says why for an unreadable one).
+     *
+     * @param neighbours the GeoTIFF holding a tile, or null if there is none
+     */
+    public static HgtTile read(Path file, java.util.function.Function<TileId, Path> neighbours) {
+        TileId id = TileId.parseFileName(file.getFileName().toString());
+        Grid g = readGrid(file);
+        List<String> warnings = new ArrayList<>();
+        return toTile(stitch(g, id, neighbours, warnings), id, warnings);
+    }
+
+    /**
+     * The grid with one more column (row) just east (south) of it, from the neighbouring tiles' files,
+     * where its last pixel centres stop short of the tile's eastern (southern) edge by up to one pixel.
+     */
+    static Grid stitch(Grid g, TileId id, java.util.function.Function<TileId, Path> neighbours, List<String> warnings) {
+        double eastCol = g.colOf(g.unwrap(id.lonWestDeg() + 1)), southRow = g.rowOf(id.latSouthDeg());
+        boolean east = eastCol > g.width() - 1 + 1e-6 && eastCol <= g.width() + 1e-6;
+        boolean south = southRow > g.height() - 1 + 1e-6 && southRow <= g.height() + 1e-6;
+        if (!east && !south) {
+            return g;
+        }
+        int w = g.width() + (east ? 1 : 0), h = g.height() + (south ? 1 : 0);
+        double lonV = g.lonOfCol0Deg() + g.width() * g.colSpacingDeg(), latV = g.latOfRow0Deg() - g.height() * g.rowSpacingDeg();
+        float[] z = new float[w * h];
+        for (int r = 0; r < g.height(); r++) {
+            System.arraycopy(g.heightsMetres(), r * g.width(), z, r * w, g.width());
+        }
+        Grid e = east ? neighbour(neighbours, TileId.of(id.latSouthDeg(), id.lonWestDeg() + 1), Part.FIRST_COLUMN, g, warnings) : null;
+        Grid s = south ? neighbour(neighbours, TileId.of(id.latSouthDeg() - 1 < -90 ? id.latSouthDeg() : id.latSouthDeg() - 1,
+                id.lonWestDeg()), Part.FIRST_ROW, g, warnings) : null;
+        if (south && id.latSouthDeg() == -90) {
+            s = null;
+        }
+        if (east) {
+            for (int r = 0; r < g.height(); r++) {
+                z[r * w + g.width()] = e != null ? at(e, g.latOfRow0Deg() - r * g.rowSpacingDeg(), lonV) : z[r * w + g.width() - 1];
+            }
+        }
+        if (south) {
+            for (int c = 0; c < g.width(); c++) {
+                z[g.height() * w + c] = s != null ? at(s, latV, g.lonOfCol0Deg() + c * g.colSpacingDeg()) : z[(g.height() - 1) * w + c];
+            }
+        }
+        if (east && south) {
+            Grid se = id.latSouthDeg() == -90 ? null
+                    : neighbour(neighbours, TileId.of(id.latSouthDeg() - 1, id.lonWestDeg() + 1), Part.FIRST_PIXEL, g, warnings);
+            z[w * h - 1] = se != null ? at(se, latV, lonV)
+                    : s != null ? z[w * h - 2] : e != null ? z[(h - 1) * w - 1] : z[(h - 2) * w + w - 2];
+        }
+        return new Grid(g.source(), w, h, z, g.lonOfCol0Deg(), g.latOfRow0Deg(), g.colSpacingDeg(), g.rowSpacingDeg(),
+                g.pixelIsPoint(), g.verticalDatum(), g.geographicEpsg());
+    }
+
+    private static Grid neighbour(java.util.function.Function<TileId, Path> neighbours, TileId id, Part part, Grid of,
+                                  List<String> warnings) {
+        Path file = neighbours.apply(id);
+        if (file == null) {
+            return null;
+        }
+        try {
+            return readGrid(file, part);
+        } catch (DemException e) {
+            warnings.add(of.source() + ": edge towards " + id + " not joined (" + e.getMessage() + "); the last pixels are repeated");
+            return null;
+        }
+    }
+
+    /** A neighbour's height at a coordinate (its pixels, bilinear, up to one pixel beyond), NaN if void. */
+    private static float at(Grid n, double latDeg, double lonDeg) {
+        return sample(n, n.rowOf(latDeg), n.colOf(n.unwrap(lonDeg)));
+    }
+
+    /**
+     * Reads the full-resolution heights and georeferencing of a GeoTIFF.
+     *
+     * @throws DemException naming the file and the problem (unreadable, not a TIFF, truncated,
+     *                      unsupported layout or compression, projected CRS, implausible heights)
+     */
+    public static Grid readGrid(Path file) {
+        return readGrid(file, Part.ALL);
+    }
+
+    /** Which pixels to decode: all, or only the first column or row (for a neighbour's edge). */
+    enum Part {
+        ALL, FIRST_COLUMN, FIRST_ROW, FIRST_PIXEL
+    }
+
+    static Grid readGrid(Path file, Part part) {
+        byte[] bytes;
+        try {
+            bytes = Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new DemException(file + ": no such file", e);
+        } catch (IOException e) {
+            throw new DemException(file + ": cannot read (" + e + ")", e);
+        }
+        return decode(file.toString(), file.getFileName().toString(), bytes, part);
+    }
+
+    /** {@link #readGrid} on bytes already read; {@code fileName} decides the datum by naming convention. */
+    static Grid decode(String source, String fileName, byte[] bytes, Part part) {
+        if (bytes.length >= 4 && (bytes[0] == 'I' && bytes[2] == 43 && bytes[3] == 0 || bytes[0] == 'M' && bytes[2] == 0 && bytes[3] == 43)) {
+            throw new DemException(source + " is a BigTIFF, which dempano cannot read; rewrite it as a classic TIFF, "
+                    + "e.g. gdal_translate -co BIGTIFF=NO (one-degree tiles are far below 4 GB)");
+        }
+        FileDirectory dir;
+        try {
+            TIFFImage image = TiffReader.readTiff(bytes);
+            dir = fullResolution(image);
+        } catch (RuntimeException e) {
+            throw new DemException(source + " is not a readable TIFF file (" + reason(e) + "; truncated, or not a TIFF?)", e);
+        }
+        if (dir == null) {
+            throw new DemException(source + " holds no image");
+        }
+        Map<Integer, Object> keys = geoKeys(source, dir);
+        Object model = keys.get(GT_MODEL_TYPE);
+        if (model == null) {
+            throw new DemException(source + " has no GeoTIFF georeferencing keys (GTModelTypeGeoKey): cannot tell "
+                    + "where its pixels lie; write it as a GeoTIFF in EPSG:4326, e.g. gdal_translate -a_srs EPSG:4326");
+        }
+        if (intKey(keys, GT_MODEL_TYPE) == MODEL_PROJECTED) {
+            Integer epsg = keys.get(PROJECTED_CS_TYPE) instanceof Integer i ? i : null;
+            String crs = epsg == null ? "no EPSG code" : epsg == USER_DEFINED ? "user-defined" : "EPSG:" + epsg;
+            throw new DemException(source + " is in a projected CRS (" + crs + "); reproject it to geographic lat/lon, "
+                    + "e.g. with gdalwarp -t_srs EPSG:4326");
+        }
+        if (intKey(keys, GT_MODEL_TYPE) != MODEL_GEOGRAPHIC) {
+            throw new DemException(source + " has model type " + model + " (not geographic lat/lon); reproject it "
+                    + "to geographic lat/lon, e.g. with gdalwarp -t_srs EPSG:4326");
+        }
+        Object units = keys.get(GEOG_ANGULAR_UNITS);
+        if (units instanceof Integer u && u != 9102 && u != 9122) {
+            throw new DemException(source + " gives coordinates in angular unit EPSG:" + u + ", not degrees; "
+                    + "reproject it with gdalwarp -t_srs EPSG:4326");
+        }
+        int geographic = keys.get(GEOGRAPHIC_TYPE) instanceof Integer g ? g : USER_DEFINED;
+        boolean point = keys.get(GT_RASTER_TYPE) instanceof Integer t && t == RASTER_PIXEL_IS_POINT;
+
+        int width = dir.getImageWidth().intValue(), height = dir.getImageHeight().intValue();
+        double[] geo = georeferencing(source, dir); // X, Y of raster position (I, J), Sx, Sy
+        double shift = point ? 0 : 0.5; // raster coordinates of pixel (0, 0)'s centre
+        double lon0 = geo[0] + (shift - geo[4]) * geo[2];
+        double lat0 = geo[1] - (shift - geo[5]) * geo[3];
+        if (part == Part.FIRST_COLUMN || part == Part.FIRST_PIXEL) {
+            width = 1;
+        }
+        if (part == Part.FIRST_ROW || part == Part.FIRST_PIXEL) {
+            height = 1;
+        }
+        float[] heights = heights(source, dir, bytes, width, height);
+        return new Grid(source, width, height, heights, lon0, lat0, geo[2], geo[3], point,
+                verticalDatum(keys, fileName), geographic);
+    }
+
+    /** The first image that is not a reduced-resolution overview or a mask (NewSubfileType 0). */
+    private static FileDirectory fullResolution(TIFFImage image) {
+        for (FileDirectory d : image.getFileDirectories()) {
+            Number type = d.getNumberEntryValue(FieldTagType.NewSubfileType);
+            if (type == null || (type.longValue() & 5) == 0) {
+                return d;
+            }
+        }
+        return null;
+    }
+
+    /** GeoKey id → Integer, Double or String value. */
+    private static Map<Integer, Object> geoKeys(String source, FileDirectory dir) {
+        Map<Integer, Object> keys = new TreeMap<>();
+        List<Integer> d = dir.getIntegerListEntryValue(FieldTagType.GeoKeyDirectory);
+        if (d == null) {
+            return keys;
+        }
+        List<Double> doubles = dir.getDoubleListEntryValue(FieldTagType.GeoDoubleParams);
+        String ascii = dir.getStringEntryValue(FieldTagType.GeoAsciiParams);
+        if (d.size() < 4 || d.size() < 4 + 4 * d.get(3)) {
+            throw new DemException(source + ": corrupt GeoKeyDirectory (" + d.size() + " values for " + (d.size() < 4 ? "?" : d.get(3))
+                    + " keys)");
+        }
+        for (int k = 0; k < d.get(3); k++) {
+            int id = d.get(4 + 4 * k), location = d.get(5 + 4 * k), count = d.get(6 + 4 * k), value = d.get(7 + 4 * k);
+            if (location == 0) {
+                keys.put(id, value);
+            } else if (location == TAG_GEO_DOUBLE_PARAMS && doubles != null && value < doubles.size()) {
+                keys.put(id, doubles.get(value));
+            } else if (location == TAG_GEO_ASCII_PARAMS && ascii != null && value + count <= ascii.length()) {
+                keys.put(id, ascii.substring(value, value + count).replaceAll("\\|$", ""));
+            }
+        }
+        return keys;
+    }
+
+    private static int intKey(Map<Integer, Object> keys, int id) {
+        return keys.get(id) instanceof Integer i ? i : -1;
+    }
+
+    /** X, Y (degrees) of raster position (I, J), pixel sizes Sx, Sy (degrees, Sy positive north-up), I, J. */
+    private static double[] georeferencing(String source, FileDirectory dir) {
+        List<Double> tie = dir.getModelTiepoint();
+        List<Double> scale = dir.getModelPixelScale();
+        List<Double> m = dir.getDoubleListEntryValue(FieldTagType.ModelTransformation);
+        double[] g;
+        if (tie != null && tie.size() > 6) {
+            throw new DemException(source + " is georeferenced by " + tie.size() / 6 + " control points, not a regular "
+                    + "grid; warp it first, e.g. gdalwarp -t_srs EPSG:4326");
+        } else if (tie != null && tie.size() == 6 && scale != null && scale.size() >= 2) {
+            g = new double[] {tie.get(3), tie.get(4), scale.get(0), scale.get(1), tie.get(0), tie.get(1)};
+        } else if (m != null && m.size() == 16) {
+            if (m.get(1) != 0 || m.get(4) != 0) {
+                throw new DemException(source + " has a rotated or sheared grid (ModelTransformation); warp it first, "
+                        + "e.g. gdalwarp -t_srs EPSG:4326");
+            }
+            g = new double[] {m.get(3), m.get(7), m.get(0), -m.get(5), 0, 0};
+        } else {
+            throw new DemException(source + " has no usable georeferencing (neither ModelTiepoint with ModelPixelScale "
+                    + "nor ModelTransformation)");
+        }
+        if (!(g[2] > 0) || !(g[3] != 0) || !Double.isFinite(g[0]) || !Double.isFinite(g[1]) || Double.isInfinite(g[3])) {
+            throw new DemException(source + ": unusable pixel size " + g[2] + "° × " + g[3]
+                    + "° (needs a positive, finite east-west size)");
+        }
+        return g;
+    }
+
+    /** Compression codes the TIFF library decodes. */
+    private static final Map<Integer, String> COMPRESSIONS = Map.of(1, "none", 5, "LZW", 8, "Deflate",
+            32946, "Deflate", 32773, "PackBits");
+    private static final Map<Integer, String> KNOWN_UNSUPPORTED = Map.of(6, "old JPEG", 7, "JPEG", 34887, "LERC",
+            34925, "LZMA", 50000, "ZSTD", 50001, "WebP", 50002, "JPEG XL", 2, "CCITT RLE", 3, "CCITT G3", 4, "CCITT G4");
+
+    /**
+     * Decodes the pixels [0, width) × [0, height) into heights, NaN for voids. The TIFF library parses
+     * the directory and decompresses each strip or tile; predictors and sample conversion are done
+     * here, on whole blocks (the library's per-sample path takes ~8 s for a 3600² float tile, and
+     * undoes predictors in little-endian order only).
+     */
+    private static float[] heights(String source, FileDirectory dir, byte[] file, int width, int height) {
+        int compression = dir.getCompression() == null ? 1 : dir.getCompression();
+        if (!COMPRESSIONS.containsKey(compression)) {
+            throw new DemException(source + " uses TIFF compression " + compression
+                    + (KNOWN_UNSUPPORTED.containsKey(compression) ? " (" + KNOWN_UNSUPPORTED.get(compression) + ")" : "")
+                    + ", which dempano cannot decode; recompress it, e.g. gdal_translate -co COMPRESS=DEFLATE");
+        }
+        int predictor = dir.getPredictor() == null ? 1 : dir.getPredictor();
+        if (predictor != 1 && predictor != 2 && predictor != 3) {
+            throw new DemException(source + " uses TIFF predictor " + predictor + ", which dempano cannot decode "
+                    + "(supported: 1 none, 2 horizontal, 3 floating point)");
+        }
+        if (dir.getSamplesPerPixel() != 1) {
+            throw new DemException(source + " has " + dir.getSamplesPerPixel() + " bands; a DEM needs exactly one "
+                    + "band of heights (extract it, e.g. gdal_translate -b 1)");
+        }
+        int bits = dir.getBitsPerSample() == null ? 1 : dir.getBitsPerSample().get(0);
+        int format = dir.getSampleFormat() == null ? 1 : dir.getSampleFormat().get(0);
+        boolean floating = format == 3;
+        if (!(floating ? bits == 32 || bits == 64 : (format == 1 || format == 2) && (bits == 8 || bits == 16 || bits == 32))) {
+            throw new DemException(source + ": unsupported sample type (" + bits + "-bit " + (floating ? "float"
+                    : format == 2 ? "signed integer" : format == 1 ? "unsigned integer" : "format " + format)
+                    + "; supported: 8/16/32-bit integers, 32/64-bit floats)");
+        }
+        if (predictor == 3 && !floating) {
+            throw new DemException(source + ": floating-point predictor on integer samples (corrupt file?)");
+        }
+        int bytes = bits / 8;
+        java.nio.ByteOrder order = dir.getReader().getByteOrder();
+        boolean tiled = dir.isTiled();
+        int fullWidth = dir.getImageWidth().intValue(), fullHeight = dir.getImageHeight().intValue();
+        int bw = tiled ? dir.getTileWidth().intValue() : fullWidth;
+        int bh = tiled ? dir.getTileHeight().intValue()
+                : dir.getRowsPerStrip() == null ? fullHeight : (int) Math.min(fullHeight, dir.getRowsPerStrip().longValue());
+        List<? extends Number> offsets = tiled ? dir.getTileOffsets() : dir.getStripOffsets();
+        List<? extends Number> counts = tiled ? dir.getTileByteCounts() : dir.getStripByteCounts();
+        if (bw <= 0 || bh <= 0 || offsets == null || counts == null) {
+            throw new DemException(source + ": no image data layout (strip or tile offsets missing; corrupt file?)");
+        }
+        int across = (fullWidth + bw - 1) / bw, down = (fullHeight + bh - 1) / bh;
+        if (offsets.size() < (long) across * down || counts.size() < (long) across * down) {
+            throw new DemException(source + ": " + offsets.size() + " image blocks listed, " + across * down
+                    + " needed (corrupt file?)");
+        }
+        double nodata = nodata(source, dir);
+        float nodataFloat = (float) nodata;
+        float[] out = new float[width * height];
+        mil.nga.tiff.compression.CompressionDecoder decoder = dir.getDecoder();
+        for (int by = 0; by * bh < height; by++) {
+            for (int bx = 0; bx * bw < width; bx++) {
+                int k = by * across + bx;
+                long off = offsets.get(k).longValue(), len = counts.get(k).longValue();
+                if (off < 0 || len < 0 || off + len > file.length) {
+                    throw new DemException(source + ": image block " + k + " lies beyond the end of the file ("
+                            + file.length + " bytes; truncated?)");
+                }
+                int rows = tiled ? bh : Math.min(bh, fullHeight - by * bh);
+                byte[] block;
+                try {
+                    block = decoder.decode(java.util.Arrays.copyOfRange(file, (int) off, (int) (off + len)), order);
+                } catch (RuntimeException e) {
+                    throw new DemException(source + ": cannot decompress image block " + k + " (" + reason(e)
+                            + "; truncated or corrupt file?)", e);
+                }
+                if (block == null || block.length < (long) bw * rows * bytes) {
+                    throw new DemException(source + ": image block " + k + " holds " + (block == null ? 0 : block.length)
+                            + " bytes, " + (long) bw * rows * bytes + " expected (truncated or corrupt file?)");
+                }
+                ByteBuffer buf = ByteBuffer.wrap(block).order(order);
+                for (int r = 0; r < rows; r++) {
+                    int y = by * bh + r;
+                    if (y >= height) {
+                        break;
+                    }
+                    int rowStart = r * bw * bytes;
+                    if (predictor == 2) {
+                        undoHorizontal(buf, rowStart, bw, bytes);
+                    }
+                    int cols = Math.min(bw, width - bx * bw);
+                    for (int c = 0; c < cols; c++) {
+                        double v;
+                        if (predictor == 3) {
+                            v = floatingPointSample(block, rowStart, bw, bytes, c);
+                        } else {
+                            int at = rowStart + c * bytes;
+                            v = switch (bytes) {
+                                case 1 -> format == 2 ? block[at] : block[at] & 0xff;
+                                case 2 -> format == 2 ? buf.getShort(at) : buf.getShort(at) & 0xffff;
+                                case 4 -> floating ? buf.getFloat(at) : format == 2 ? buf.getInt(at) : buf.getInt(at) & 0xffffffffL;
+                                default -> buf.getDouble(at);
+                            };
+                        }
+                        int x = bx * bw + c, i = y * width + x;
+                        if (Double.isNaN(v) || v == nodata || (bits == 32 && floating && (float) v == nodataFloat)) {
+                            out[i] = Float.NaN;
+                        } else if (v < HgtReader.MIN_PLAUSIBLE_METRES || v > HgtReader.MAX_PLAUSIBLE_METRES) {
+                            throw new DemException(String.format(Locale.ROOT, "%s: implausible height %s m at row %d, column %d "
+                                    + "(corrupt, not metres, or a nodata value without a GDAL_NODATA tag%s)", source,
+                                    fmt(v), y, x, Double.isNaN(nodata) ? "" : "; GDAL_NODATA is " + fmt(nodata)));
+                        } else {
+                            out[i] = (float) v;
+                        }
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Undoes the horizontal predictor (2) on one row of a block in place: sums along the row, wrapping. */
+    private static void undoHorizontal(ByteBuffer buf, int rowStart, int n, int bytes) {
+        for (int c = 1; c < n; c++) {
+            int at = rowStart + c * bytes, prev = at - bytes;
+            switch (bytes) {
+                case 1 -> buf.put(at, (byte) (buf.get(at) + buf.get(prev)));
+                case 2 -> buf.putShort(at, (short) (buf.getShort(at) + buf.getShort(prev)));
+                case 4 -> buf.putInt(at, buf.getInt(at) + buf.getInt(prev));
+                default -> buf.putLong(at, buf.getLong(at) + buf.getLong(prev));
+            }
+        }
+    }
+
+    /**
+     * Sample c of a row under the floating-point predictor (3): the row holds byte planes, most
+     * significant first, differenced byte by byte. The first call for a row (c == 0) undoes the
+     * differencing in place.
+     */
+    private static double floatingPointSample(byte[] block, int rowStart, int n, int bytes, int c) {
+        if (c == 0) {
+            for (int j = rowStart + 1; j < rowStart + n * bytes; j++) {
+                block[j] += block[j - 1];
+            }
+        }
+        long v = 0;
+        for (int k = 0; k < bytes; k++) {
+            v = (v << 8) | (block[rowStart + k * n + c] & 0xff);
+        }
+        return bytes == 4 ? Float.intBitsToFloat((int) v) : Double.longBitsToDouble(v);
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    /** The GDAL_NODATA value, NaN if none (NaN samples are voids anyway). */
+    private static double nodata(String source, FileDirectory dir) {
+        String s = dir.getStringEntryValue(FieldTagType.GDAL_NODATA);
+        if (s == null || s.isBlank()) {
+            return Double.NaN;
+        }
+        String t = s.trim().replace("\0", "").toLowerCase(Locale.ROOT);
+        try {
+            return switch (t) {
+                case "nan", "-nan" -> Double.NaN;
+                case "inf", "+inf" -> Double.POSITIVE_INFINITY;
+                case "-inf" -> Double.NEGATIVE_INFINITY;
+                default -> Double.parseDouble(t);
+            };
+        } catch (NumberFormatException e) {
+            throw new DemException(source + ": GDAL_NODATA tag '" + s.trim() + "' is not a number");
+        }
+    }
+
+    /** The vertical datum from the vertical GeoKeys, else the Copernicus naming, else unknown. */
+    private static String verticalDatum(Map<Integer, Object> keys, String fileName) {
+        int cs = intKey(keys, VERTICAL_CS_TYPE), datum = intKey(keys, VERTICAL_DATUM);
+        if (cs == 5773 || datum == 5171) {
+            return DemContribution.EGM96;
+        }
+        if (cs == 3855 || datum == 1027) {
+            return DemContribution.EGM2008;
+        }
+        if (cs > 0 && cs != USER_DEFINED) {
+            return "EPSG:" + cs;
+        }
+        if (keys.get(VERTICAL_CITATION) instanceof String citation) {
+            String c = citation.toUpperCase(Locale.ROOT).replace(" ", "");
+            if (c.contains("EGM2008") || c.contains("EGM08")) {
+                return DemContribution.EGM2008;
+            }
+            if (c.contains("EGM96")) {
+                return DemContribution.EGM96;
+            }
+        }
+        if (fileName.toLowerCase(Locale.ROOT).startsWith("copernicus_")) {
+            return DemContribution.EGM2008; // Copernicus DEM heights refer to EGM2008 (product handbook)
+        }
+        return DemContribution.UNKNOWN;
+    }
+
+    /** Intervals per degree of the tile grid for a pixel size: 1/size rounded, at most {@link #MAX_INTERVALS_PER_DEGREE}. */
+    static int intervalsPerDegree(double pixelSizeDeg) {
+        double per = 1 / Math.abs(pixelSizeDeg);
+        long rounded = Math.round(per);
+        long ipd = Math.abs(per - rounded) < 1e-6 * per ? rounded : (long) Math.ceil(per);
+        return (int) Math.max(1, Math.min(MAX_INTERVALS_PER_DEGREE, ipd));
+    }
+
+    /**
+     * Resamples a grid onto one tile's grid: (n + 1)² samples on the tile's edges, n = 1/pixel size
+     * (the finer of the two directions, so Copernicus' width-reduced tiles above 50° come out square
+     * at their latitude resolution) capped at {@link #MAX_INTERVALS_PER_DEGREE}. A tile sample on a
+     * pixel centre (within 10⁻⁶ pixel) takes that pixel's height exactly; others are bilinear from the
+     * four pixels around them, void if any of those with a non-zero weight is void. Samples up to one
+     * pixel beyond the outermost pixel centres (Copernicus tiles hold no southern row and eastern
+     * column: they are the neighbours' first) take the edge pixels' heights; samples farther out are
+     * voids. Voids are then filled as for .hgt tiles.
+     *
+     * @throws DemException if the grid does not cover the tile's centre (a file named for another tile)
+     */
+    public static HgtTile toTile(Grid g, TileId id) {
+        return toTile(g, id, List.of());
+    }
+
+    /** {@link #toTile(Grid, TileId)} with warnings found before (they come first in the tile's). */
+    static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings) {
+        int ipd = intervalsPerDegree(Math.min(g.colSpacingDeg(), Math.abs(g.rowSpacingDeg())));
+        double centreRow = g.rowOf(id.latSouthDeg() + 0.5), centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5));
+        if (!(centreRow >= -1 && centreRow <= g.height() && centreCol >= -1 && centreCol <= g.width())) {
+            double latA = g.latOfRow0Deg(), latB = g.latOfRow0Deg() - (g.height() - 1) * g.rowSpacingDeg();
+            double lonA = g.lonOfCol0Deg(), lonB = g.lonOfCol0Deg() + (g.width() - 1) * g.colSpacingDeg();
+            throw new DemException(String.format(Locale.ROOT, "%s is named for tile %s but its pixels cover latitude "
+                    + "%.4f…%.4f°, longitude %.4f…%.4f°", g.source(), id, Math.min(latA, latB), Math.max(latA, latB),
+                    lonA, lonB));
+        }
+        int n = ipd + 1;
+        float[] h = new float[n * n];
+        double[] cols = new double[n];
+        for (int c = 0; c < n; c++) {
+            cols[c] = g.colOf(g.unwrap(id.lonWestDeg() + (double) c / ipd));
+        }
+        for (int r = 0; r < n; r++) {
+            double row = g.rowOf(id.latSouthDeg() + 1 - (double) r / ipd);
+            for (int c = 0; c < n; c++) {
+                h[r * n + c] = sample(g, row, cols[c]);
+            }
+        }
+        List<String> warnings = new ArrayList<>(earlierWarnings);
+        String zeros = Plausibility.zeroRowsBelowLand(h, n, g.source());
+        if (zeros != null) {
+            warnings.add(zeros);
+        }
+        BitSet mask = VoidFiller.voidMask(h);
+        VoidReport voids = VoidFiller.fill(h, n);
+        String needles = Plausibility.needles(h, n, id, g.source());
+        if (needles != null) {
+            warnings.add(needles);
+        }
+        return new HgtTile(id, g.source(), n, h, voids, mask, warnings).withVerticalDatum(g.verticalDatum());
+    }
+
+    /** Height at fractional (row, col) of the grid, NaN if void or out of range (see {@link #toTile}). */
+    static float sample(Grid g, double row, double col) {
+        row = snap(row);
+        col = snap(col);
+        if (!(row >= -1 && row <= g.height() && col >= -1 && col <= g.width())) {
+            return Float.NaN;
+        }
+        row = Math.max(0, Math.min(g.height() - 1, row));
+        col = Math.max(0, Math.min(g.width() - 1, col));
+        int r0 = (int) Math.floor(row), c0 = (int) Math.floor(col);
+        double fr = row - r0, fc = col - c0;
+        float[] z = g.heightsMetres();
+        int w = g.width();
+        double sum = 0;
+        for (int dr = 0; dr < 2; dr++) {
+            double wr = dr == 0 ? 1 - fr : fr;
+            if (wr == 0) {
+                continue;
+            }
+            for (int dc = 0; dc < 2; dc++) {
+                double wc = dc == 0 ? 1 - fc : fc;
+                if (wc == 0) {
+                    continue;
+                }
+                float v = z[(r0 + dr) * w + c0 + dc];
+                if (Float.isNaN(v)) {
+                    return Float.NaN;
+                }
+                sum += wr * wc * v;
+            }
+        }
+        return (float) sum;
+    }
+
+    private static double snap(double x) {
+        double r = Math.rint(x);
+        return Math.abs(x - r) < 1e-6 ? r : x;
+    }
+
+    private static String reason(Throwable e) {
+        String m = e.getMessage();
+        return e.getClass().getSimpleName() + (m == null || m.isBlank() ? "" : ": " + m);
+    }
+}

@@ -1,0 +1,173 @@
+package dempano.dem;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.util.List;
+import java.util.function.DoubleBinaryOperator;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class PriorityDemTest {
+    @TempDir
+    Path dir;
+
+    private static final TileId WEST = TileId.of(46, 8), EAST = TileId.of(46, 9);
+
+    /** Source A's heights: a plane in lat/lon. */
+    private static double fa(double lat, double lon) {
+        return 1000 + 800 * (lat - 46) + 300 * (lon - 8);
+    }
+
+    /** Source B's heights: another plane, so every sample tells which source served it. */
+    private static double fb(double lat, double lon) {
+        return 3000 - 500 * (lat - 46) + 100 * (lon - 8);
+    }
+
+    /** A tile sampling f on an ipd grid, void where the predicate holds. */
+    private static HgtTile tile(TileId id, int ipd, DoubleBinaryOperator f, RowCol isVoid, String source) {
+        int n = ipd + 1;
+        float[] h = new float[n * n];
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                h[r * n + c] = isVoid.test(r, c) ? Float.NaN
+                        : (float) f.applyAsDouble(id.latSouthDeg() + 1 - (double) r / ipd, id.lonWestDeg() + (double) c / ipd);
+            }
+        }
+        return HgtTile.of(id, n, h, source);
+    }
+
+    interface RowCol {
+        boolean test(int row, int col);
+    }
+
+    private static boolean hole(int r, int c) {
+        return r >= 30 && r < 50 && c >= 40 && c < 70;
+    }
+
+    @Test
+    void aWinsWhereItHasDataAndBFillsItsVoidsAndMissingTiles() {
+        DemSource a = new InMemoryDem("A", List.of(tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A/N46E008")));
+        DemSource b = new InMemoryDem("B", List.of(tile(WEST, 120, PriorityDemTest::fb, (r, c) -> false, "B/N46E008"),
+                tile(EAST, 120, PriorityDemTest::fb, (r, c) -> false, "B/N46E009")));
+        Mosaic m = Mosaic.around(new PriorityDem(List.of(a, b)), 46.5, 9.0, 20_000, MissingTilePolicy.ERROR);
+        assertEquals(List.of(WEST, EAST), m.tilesUsed());
+        assertEquals("A, then B", m.sourceDescription());
+        for (int row = 0; row < m.rows(); row++) {
+            for (int col = 0; col < m.cols(); col++) {
+                double lat = m.latOfRow(row), lon = m.lonOfCol(col);
+                // The edge at 9°E is the eastern tile's (B's); west of it A's, except A's hole.
+                boolean fromA = col < 120 && !hole(row, col);
+                double expected = fromA ? fa(lat, lon) : fb(lat, lon);
+                assertEquals(expected, m.sample(row, col), 1e-3, "sample " + row + ", " + col);
+                assertEquals(0, m.flags(row, col), "nothing interpolated at " + row + ", " + col);
+            }
+        }
+        assertEquals(List.of(new DemContribution("A/N46E008", "unknown", 121 * 121 - 600),
+                new DemContribution("B/N46E008", "unknown", 600)), m.tileSources().get(WEST));
+        assertEquals(List.of(new DemContribution("B/N46E009", "unknown", 121 * 121)), m.tileSources().get(EAST));
+    }
+
+    @Test
+    void voidsNoSourceHasAreInterpolatedAndNotCounted() {
+        HgtTile a = tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A");
+        // B is void over the hole's first five rows too.
+        HgtTile b = tile(WEST, 120, PriorityDemTest::fb, (r, c) -> r < 35, "B");
+        HgtTile merged = PriorityDem.merge(a, List.of(b));
+        assertEquals(5 * 30, merged.voids().voidCells());
+        assertTrue(merged.isFilledVoid(32, 50));
+        assertEquals(fb(47 - 40 / 120.0, 8 + 50 / 120.0), merged.heightMetres(40, 50), 1e-3);
+        assertEquals(List.of(121L * 121 - 600, 600L - 150), merged.contributions().stream().map(DemContribution::samples).toList());
+    }
+
+    @Test
+    void aFillerOfAnotherResolutionIsSampledOnThePrimaryGrid() {
+        HgtTile a = tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A");
+        for (int ipd : new int[] {240, 60, 90}) {
+            HgtTile b = tile(WEST, ipd, PriorityDemTest::fb, (r, c) -> false, "B" + ipd);
+            HgtTile merged = PriorityDem.merge(a, List.of(b));
+            assertEquals(121, merged.samplesPerSide());
+            for (int r = 30; r < 50; r++) {
+                for (int c = 40; c < 70; c++) {
+                    // Bilinear interpolation reproduces a plane: exact wherever B's samples lie.
+                    assertEquals(fb(47 - r / 120.0, 8 + c / 120.0), merged.heightMetres(r, c), 2e-3, ipd + ": " + r + ", " + c);
+                }
+            }
+            assertEquals(0, merged.voids().voidCells());
+        }
+        // A coarser filler's void: the A samples on it and those interpolated from it stay voids.
+        HgtTile holey = tile(WEST, 60, PriorityDemTest::fb, (r, c) -> r == 20 && c == 25, "B");
+        HgtTile merged = PriorityDem.merge(a, List.of(holey));
+        assertTrue(merged.isFilledVoid(40, 50), "on B's void (20, 25)");
+        assertTrue(merged.isFilledVoid(41, 50), "half-way to B's void");
+        assertTrue(merged.isFilledVoid(40, 51), "half-way to B's void");
+        assertTrue(!merged.isFilledVoid(43, 50), "from B's (21, 25) and (22, 25)");
+        assertEquals(fb(47 - 43 / 120.0, 8 + 50 / 120.0), merged.heightMetres(43, 50), 2e-3);
+        assertEquals(9, merged.voids().voidCells(), "A's samples 39…41 × 49…51 touch B's void");
+    }
+
+    @Test
+    void aTileWithoutVoidsIsThePrimarysOwn() {
+        HgtTile a = tile(WEST, 120, PriorityDemTest::fa, (r, c) -> false, "A");
+        DemSource p = new PriorityDem(List.of(new InMemoryDem("A", List.of(a)),
+                new InMemoryDem("B", List.of(tile(WEST, 120, PriorityDemTest::fb, (r, c) -> false, "B")))));
+        assertSame(a, p.tile(WEST).orElseThrow());
+        assertTrue(p.tile(TileId.of(0, 0)).isEmpty());
+        assertThrows(IllegalArgumentException.class, () -> new PriorityDem(List.of()));
+    }
+
+    /** A GeoTIFF directory before an .hgt directory, through the files; a changed file is read again. */
+    @Test
+    void directoriesInPriorityAndAChangedFileIsNeverServedStale() throws IOException {
+        Path aDir = Files.createDirectory(dir.resolve("copernicus")), bDir = Files.createDirectory(dir.resolve("srtm"));
+        double d = 1.0 / 1200;
+        GeoTiffTestFiles.Spec spec = GeoTiffTestFiles.geographic(1200, 1200, 8, 47, d, d, true).withNodata("-9999")
+                .withCompression(GeoTiffTestFiles.DEFLATE, 2).withLayout(256, 0, java.nio.ByteOrder.LITTLE_ENDIAN);
+        Path tif = aDir.resolve("Copernicus_DSM_COG_30_N46_00_E008_00_DEM.tif");
+        GeoTiffTestFiles.write(tif, spec, (r, c) -> r >= 100 && r < 110 && c >= 200 && c < 230 ? -9999 : 500 + r % 7);
+        Path hgt = HgtTestFiles.write(bDir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 2000 + c % 5));
+        PriorityDem p = new PriorityDem(List.of(new DemDirectory(aDir), new DemDirectory(bDir)));
+        HgtTile t = p.tile(WEST).orElseThrow();
+        assertEquals(500 + 104 % 7, t.heightMetres(104, 199));
+        assertEquals(2000 + 210 % 5, t.heightMetres(105, 210));
+        assertEquals(List.of(new DemContribution(tif.toString(), "EGM2008", 1201L * 1201 - 300),
+                new DemContribution(hgt.toString(), "EGM96", 300)), t.contributions());
+        assertSame(t, p.tile(WEST).orElseThrow(), "unchanged files: the cached merge");
+
+        // B rewritten: the merge follows.
+        HgtTestFiles.write(bDir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 3000 + c % 5));
+        Files.setLastModifiedTime(hgt, FileTime.fromMillis(Files.getLastModifiedTime(hgt).toMillis() + 2000));
+        assertEquals(3000 + 210 % 5, p.tile(WEST).orElseThrow().heightMetres(105, 210));
+        // A rewritten without the hole: A alone.
+        GeoTiffTestFiles.write(tif, spec, (r, c) -> 600);
+        Files.setLastModifiedTime(tif, FileTime.fromMillis(Files.getLastModifiedTime(tif).toMillis() + 2000));
+        HgtTile again = p.tile(WEST).orElseThrow();
+        assertEquals(600, again.heightMetres(105, 210));
+        assertEquals(List.of(new DemContribution(tif.toString(), "EGM2008", 1201L * 1201)), again.contributions());
+    }
+
+    @Test
+    void aTileFileRemovedAfterIndexingIsReportedByName() throws IOException {
+        Path hgt = HgtTestFiles.write(dir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 100));
+        DemDirectory d = new DemDirectory(dir);
+        assertEquals(100, d.tile(WEST).orElseThrow().heightMetres(5, 5));
+        Files.delete(hgt);
+        DemException e = assertThrows(DemException.class, () -> d.tile(WEST));
+        assertEquals("tile N46E008: " + hgt + " is gone (removed since the folder was indexed)", e.getMessage());
+    }
+
+    @Test
+    void anHgtAndAGeoTiffForOneTileInOneDirectoryAreAmbiguous() throws IOException {
+        HgtTestFiles.write(dir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 100));
+        GeoTiffTestFiles.write(dir.resolve("N46E008.tif"), GeoTiffTestFiles.geographic(121, 121, 8, 47, 1 / 120.0, 1 / 120.0, true),
+                (r, c) -> 100);
+        DemException e = assertThrows(DemException.class, () -> new DemDirectory(dir).tile(WEST));
+        assertTrue(e.getMessage().contains("is ambiguous") && e.getMessage().contains("N46E008.tif"), e.getMessage());
+    }
+}
