@@ -377,9 +377,11 @@ public final class AccuracyReport {
                 + "  so large misses cannot enter (the thesis had 13 % MAPE).\n");
         b.append("- Untruncated: every summit the DEM itself shows, misses counted. \"DEM-visible\": the CPU reference panorama\n"
                 + "  sees the DEM's own point at the summit's position (the surveyed position at the DEM's bilinear height,\n"
-                + "  projected the same way; it is hidden when the reference reads nearer terrain there). For each of those\n"
-                + "  the GL estimate is compared with the truth whatever its error; \"no reading\" counts DEM-visible summits\n"
-                + "  where the GL panorama shows no terrain in the window (left out of the metrics).\n\n");
+                + "  projected the same way; it is hidden when the reference reads nearer terrain there; summits on tiles the\n"
+                + "  DEM lacks are left out). For each of those the GL estimate is compared with the truth whatever its error;\n"
+                + "  \"no reading\" counts DEM-visible summits where the GL panorama shows no terrain in the window (left out of\n"
+                + "  the metrics). The projector's window model applies to both: a summit seen against higher terrain behind\n"
+                + "  it reads that terrain and counts as neither.\n\n");
         StringBuilder truncated = new StringBuilder("| scene | summits in range | visible | RMSE m | MAPE | RSE | R² |");
         StringBuilder untruncated = new StringBuilder("| scene | DEM-visible | no reading | compared | RMSE m | MAPE | median APE | RSE | R² |");
         for (double t : dempano.summits.DistanceMetrics.THRESHOLDS) {
@@ -451,6 +453,7 @@ public final class AccuracyReport {
     /**
      * Summits whose DEM point (surveyed position, the DEM's bilinear height there) the reference
      * panorama sees, by {@link #key}: the list re-projected with DEM heights into the reference.
+     * Summits on tiles the DEM lacks (held as sea level) are never DEM-visible.
      */
     static java.util.Set<String> demVisibleSummits(Scene scene, SummitList list, Panorama reference) {
         PanoramaRequest r = scene.request();
@@ -458,7 +461,9 @@ public final class AccuracyReport {
         List<Summit> atDem = new ArrayList<>();
         for (Summit s : list.summits()) {
             double h = mosaic.heightAt(s.latDeg(), s.lonDeg());
-            if (!Double.isNaN(s.elevationMetres()) && !Double.isNaN(h)) {
+            // A summit on a missing tile stands on the sea-level stand-in: the DEM has no summit there.
+            boolean onData = !mosaic.tilesMissing().contains(dempano.dem.TileId.containing(s.latDeg(), s.lonDeg()));
+            if (!Double.isNaN(s.elevationMetres()) && !Double.isNaN(h) && onData) {
                 atDem.add(new Summit(s.name(), s.latDeg(), s.lonDeg(), h));
             }
         }
