@@ -501,9 +501,11 @@ public final class AccuracyReport {
                                     : r.setting().mode() == mode && r.setting().lodPx() == lodDefault))
                             .sorted((a, c) -> Double.compare(a.seconds(), c.seconds()))
                             .forEach(r -> {
-                                x.add(r.seconds());
                                 double v = metric.equals("p99") ? r.error().p99Relative() : r.error().farMedianRelative();
-                                y.add(Math.max(v, 1e-9)); // log axis: exact zero drawn at 1e-9
+                                if (!Double.isNaN(v)) { // NaN: no pixel farther than 20 km (the sea at 2 m)
+                                    x.add(r.seconds());
+                                    y.add(Math.max(v, 1e-9)); // log axis: exact zero drawn at 1e-9
+                                }
                             });
                     if (!x.isEmpty()) {
                         chart.addSeries(mode == null ? "shader, LOD 0-2 px" : mode.optionName(), x, y)
