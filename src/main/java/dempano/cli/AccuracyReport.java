@@ -512,6 +512,9 @@ public final class AccuracyReport {
                                 .setMarker(SeriesMarkers.CIRCLE);
                     }
                 }
+                if (chart.getSeriesMap().isEmpty()) {
+                    chart.setTitle(chart.getTitle() + " (no pixel)");
+                }
                 charts.add(chart);
             }
         }
