@@ -194,6 +194,17 @@ public final class Stitcher {
                              double dz, int[] candidates, double[] hint) {
         int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
         int w = l.widthPx(), h = l.heightPx();
+        // Fast path, most pixels: the central 2×2 samples saw one triangle. The pixel's ray lies
+        // between their rays, so it meets that (convex, planar) triangle too.
+        if (x0 >= 0 && y0 >= 0 && x0 + 1 < w && y0 + 1 < h) {
+            int t = tri[y0 * w + x0];
+            if (t >= 0 && tri[y0 * w + x0 + 1] == t && tri[(y0 + 1) * w + x0] == t && tri[(y0 + 1) * w + x0 + 1] == t) {
+                double d = seen.distanceAlong(t, dx, dy, dz);
+                if (d < Double.POSITIVE_INFINITY) {
+                    return d;
+                }
+            }
+        }
         int n = 0;
         boolean skyInCentre = false;
         for (int oy = -1; oy <= 2; oy++) {
