@@ -175,6 +175,10 @@ public final class TerrainBuilder {
         }
         // Pass 1 (parallel): distance and deviations from the heights alone; choose the level.
         double rowMetresExact = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        double cosMax = Math.cos(Math.toRadians(Math.max(0, Math.abs(eye.latDeg()) - rangeMetres / 111_000.0 - 0.01)));
+        // The distance bound needs a fixed eye (a panorama; not a fly-through, whose eye moves).
+        double maxDistanceError = !Double.isNaN(cullBelowDeg) && exaggeration == 1
+                ? LevelOfDetail.DEFAULT_MAX_DISTANCE_ERROR : 0;
         List<PatchWork> inRange = new ArrayList<>();
         for (PatchWork w : candidates) {
             // Nearest point of the patch to the eye, horizontally, as a lower bound (slightly short rows
@@ -182,6 +186,10 @@ public final class TerrainBuilder {
             double dr = Math.max(0, Math.max(w.row0 - eyeRow, eyeRow - (w.row0 + p))) * rowMetresExact * 0.995;
             double dc = Math.max(0, Math.max(w.col0 - eyeCol, eyeCol - (w.col0 + p))) * rowMetresExact * cosMin * 0.995;
             w.nearestMetres = Math.hypot(dr, dc);
+            // Farthest point, as an upper bound (long rows and columns: the cosine nearest the equator).
+            double fr = Math.max(Math.abs(w.row0 - eyeRow), Math.abs(w.row0 + p - eyeRow)) * rowMetresExact * 1.005;
+            double fc = Math.max(Math.abs(w.col0 - eyeCol), Math.abs(w.col0 + p - eyeCol)) * rowMetresExact * cosMax * 1.005;
+            w.farthestMetres = Math.hypot(fr, fc);
             if (w.nearestMetres > rangeMetres + 2000) {
                 w.nearestMetres = Double.NaN; // beyond range: dropped
             } else {
@@ -209,7 +217,9 @@ public final class TerrainBuilder {
                 w.deviations[level] = w.rawDeviations[level]
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
-            w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
+            LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
+                    w.rawDeviations[LEVELS], w.rawDeviations[LEVELS + 1], eye.eyeAltitudeMetres(), refraction.coefficient());
+            w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
         });
         if (cache != null) {
             cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
@@ -441,7 +451,7 @@ public final class TerrainBuilder {
         DeviationCache.Key cacheKey;
         float[] rawDeviations;
         boolean cacheable, fromCache, hidden;
-        double nearestMetres;
+        double nearestMetres, farthestMetres;
         double[] deviations;
         double[] skirts;
         MeshCache.Key meshKey;
