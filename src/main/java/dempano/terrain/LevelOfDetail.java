@@ -127,24 +127,29 @@ public final class LevelOfDetail {
      * @param farthestMetres        to its farthest point (an upper bound), ≥ {@code nearestMetres}
      * @param lowestMetres          the patch's lowest sample
      * @param highestMetres         the patch's highest sample
+     * @param riseAwayFromEye       a lower bound of how steeply every facet of the patch rises away from the
+     *                              eye (the gradient's component along the horizontal direction of the
+     *                              line of sight, metres per metre); 0 or less = some facet is level or
+     *                              turned away (only a positive rise counts: the patch faces the eye)
      * @param eyeAltitudeMetres     the eye's altitude
      * @param refractionCoefficient k: light bends with the earth, which then looks flatter, radius R/(1 − k)
      */
     public record Sight(double nearestMetres, double farthestMetres, double lowestMetres, double highestMetres,
-                        double eyeAltitudeMetres, double refractionCoefficient) {
+                        double riseAwayFromEye, double eyeAltitudeMetres, double refractionCoefficient) {
     }
 
     /**
-     * A lower bound of sin θ, θ the incidence angle at which a straight ray (with refraction, on the
-     * apparent earth of radius R/(1 − k)) from an eye at altitude H meets level ground at height h
-     * at horizontal distance d > 0:
-     * <pre>  sin θ ≈ (H − h) / d − d (1 − k) / 2R</pre>
+     * A lower bound of sin α, α the angle at which a straight ray (with refraction: on the apparent
+     * earth of radius R/(1 − k)) from an eye at altitude H descends below the local horizontal of
+     * ground at height h at horizontal distance d > 0: the incidence on level ground there.
+     * <pre>  sin α ≈ (H − h) / d − d (1 − k) / 2R</pre>
      * The first term is the line of sight's depression below the eye's horizontal; the earth's
      * curvature tilts the ground's horizontal at distance d by d/R the other way, so the ray meets it
      * flatter by that (the eye's depression, (H − h)/d + d/2R, less the tilt d/R). It is 0 at the
      * horizon of that ground and negative beyond it, or where the ground is above the eye (level
      * ground there cannot be seen). R is {@link #MIN_RADIUS_OF_CURVATURE_METRES}, which makes the
-     * bound lower still.
+     * bound lower still. Exact to second order: d · sin α is the height of the eye above the ground's
+     * tangent plane less the ground's drop, (H − h) − d²(1 − k)/2R.
      *
      * @param eyeAltitudeMetres     H
      * @param groundMetres          h
@@ -162,17 +167,53 @@ public final class LevelOfDetail {
     }
 
     /**
+     * The extreme of {@link #sinIncidenceLowerBound} over distances in [near, far] for ground at one
+     * height: f(d) = A/d − κd is monotonic, or has its one turning point at √(−A/κ).
+     */
+    private static double extremeOverDistance(double eye, double ground, double near, double far, double k,
+                                              boolean lowest) {
+        double a = sinIncidenceLowerBound(eye, ground, near, k), b = sinIncidenceLowerBound(eye, ground, far, k);
+        double best = lowest ? Math.min(a, b) : Math.max(a, b);
+        double turn = Math.sqrt(-(eye - ground) / ((1 - k) / (2 * MIN_RADIUS_OF_CURVATURE_METRES)));
+        if (turn > near && turn < far) {
+            double c = sinIncidenceLowerBound(eye, ground, turn, k);
+            best = lowest ? Math.min(best, c) : Math.max(best, c);
+        }
+        return best;
+    }
+
+    /**
+     * What a vertical error δ becomes along a ray that descends at α below the ground's horizontal,
+     * over ground rising at s (tan of the slope along the ray's horizontal direction, away from the
+     * eye): the hit moves by δ / (sin α + s cos α), which is δ / sin θ on level ground (θ the
+     * incidence; a lateral slope tilts the normal but cancels out). For s ≥ 0 and any α' ≥ α this
+     * divisor is at least min(1, sin α + s cos α) (it is concave in α where positive), so the value at
+     * the lowest α bounds it below.
+     */
+    static double divisorLowerBound(double sinAlpha, double rise) {
+        double sa = Math.max(-1, Math.min(1, sinAlpha));
+        return Math.min(1, sa + Math.max(0, rise) * Math.sqrt(1 - sa * sa));
+    }
+
+    /**
      * The vertical deviation, metres, that a patch may have so that the relative distance error
-     * δ / (d · sin θ) on its level ground stays within {@code maxDistanceError}: ε · d_near · sin θ_min.
-     * θ_min is the {@link #sinIncidenceLowerBound incidence} on level ground as high as the patch's
-     * highest sample at its farthest point (the smallest over the patch), raised to the grazing floor:
-     * ground seen at incidence below one panorama pixel ({@code 1 / pixelsPerDegree} degrees) is
-     * excepted, because there no level of detail can hold the bound (θ → 0 at the horizon). A ray a
-     * pixel p below the horizon of level ground (depression α_h) meets it at sin θ = √(α² − α_h²) with
-     * α = α_h + p, which is ≥ p: the exception lies within the horizon row. A patch all of whose level
-     * ground lies in that exception (incidence below the floor even at its lowest sample and nearest
-     * point: terrain at or above the eye, or beyond the horizon) gets no distance bound
-     * (+∞): its visible parts are slopes facing the eye, which the angular bound serves.
+     * δ / (d · (sin α + s cos α)) ({@link #divisorLowerBound}) stays within {@code maxDistanceError}:
+     * ε · d_near · q_min, with q_min the divisor's lower bound for the patch's highest sample at the
+     * least favourable distance and s the patch's {@linkplain Sight#riseAwayFromEye rise away from the
+     * eye} (0 for level or mixed ground, whose worst part is taken as level).
+     *
+     * <p>Exception near the horizon: ground seen with q below one panorama pixel
+     * ({@code sin(1 / pixelsPerDegree degrees)}) is excepted, because there no level of detail can
+     * hold the bound (q → 0 at the horizon). A ray a pixel p below the horizon of level ground
+     * (depression α_h at the eye) meets it at sin θ = √(α² − α_h²) with α = α_h + p, which is ≥ p:
+     * the exception lies within the horizon row. So q_min is raised to that floor, and a patch whose
+     * every part is seen below it (even its lowest sample at its nearest point: terrain at or above the
+     * eye that does not face it, or beyond the horizon) gets no distance bound (+∞) at all: its visible
+     * parts are slopes turned towards the eye, left to the angular bound.
+     *
+     * <p>Not a strict bound for slopes turned away from the eye within a patch that also holds level
+     * ground (they are seen flatter than level ground, down to 0 at their silhouettes, as at the
+     * horizon): those too are left to the angular bound.
      *
      * @param maxDistanceError ε, a fraction; 0 or less (or NaN) = no distance bound (+∞)
      * @return metres, ≥ 0, or +∞ where the distance does not constrain the level
@@ -182,15 +223,15 @@ public final class LevelOfDetail {
             return Double.POSITIVE_INFINITY;
         }
         double floor = Math.sin(Math.toRadians(1 / pixelsPerDegree));
-        double k = sight.refractionCoefficient(), eye = sight.eyeAltitudeMetres();
-        double best = sinIncidenceLowerBound(eye, sight.lowestMetres(), sight.nearestMetres(), k);
+        double k = sight.refractionCoefficient(), eye = sight.eyeAltitudeMetres(), rise = sight.riseAwayFromEye();
+        double near = Math.max(0, sight.nearestMetres()), far = Math.max(near, sight.farthestMetres());
+        double best = divisorLowerBound(extremeOverDistance(eye, sight.lowestMetres(), near, far, k, false), rise);
         if (!(best >= floor)) {
             return Double.POSITIVE_INFINITY; // wholly excepted (grazing, beyond the horizon or above the eye)
         }
-        double worst = sinIncidenceLowerBound(eye, sight.highestMetres(), Math.max(sight.farthestMetres(),
-                sight.nearestMetres()), k);
-        // d · sin θ falls with d: d_near · max(θ_far, floor) is below it wherever the bound applies.
-        return maxDistanceError * Math.max(0, sight.nearestMetres()) * Math.max(worst, floor);
+        double worst = divisorLowerBound(extremeOverDistance(eye, sight.highestMetres(), near, far, k, true), rise);
+        // The relative error δ / (d · q) at any point of the patch is at most δ / (d_near · q_min).
+        return maxDistanceError * near * Math.max(worst, floor);
     }
 
     /**
@@ -203,7 +244,7 @@ public final class LevelOfDetail {
      * @param deviationsMetres  from {@link #deviationsMetres}, with chord sag added per level
      * @param pixelsPerDegree   panorama resolution
      * @param maxErrorPx        bound on the screen error; 0 or less = always full resolution
-     * @param maxDistanceError  bound on the relative distance error on level ground (a fraction); 0 or less = none
+     * @param maxDistanceError  bound on the relative distance error (a fraction); 0 or less = none
      */
     public static int chooseLevel(double[] deviationsMetres, Sight sight, double pixelsPerDegree, double maxErrorPx,
                                   double maxDistanceError) {
@@ -214,5 +255,50 @@ public final class LevelOfDetail {
             level++;
         }
         return level;
+    }
+
+    /**
+     * A lower bound of how steeply every facet of a patch rises away from an eye
+     * ({@link Sight#riseAwayFromEye}), from bounds of the patch's height steps and the directions from
+     * the eye to its corners; 0 where some facet may be level or turned away, or the eye is within
+     * the patch. Every facet's gradient (drawn at any level: a coarse facet's steps average fine
+     * ones) lies in the box of the steps, so the least rise over box corners and corner directions
+     * bounds it (a linear function over a box; over an arc of directions under 180° the least value is
+     * at an end, or is negative). The directions are taken in the patch's own east-north plane, which
+     * turns by at most a few degrees against the true azimuths within 100s of km; that error is
+     * taken off as {@code directionSlackRad} times the steepest gradient.
+     *
+     * @param eastStepsMetres  least and greatest rise from one sample to its east neighbour, metres
+     * @param southStepsMetres least and greatest rise from one sample to its south neighbour, metres
+     * @param eastSpacingMetres  sample spacing east-west at the patch, metres (an upper bound)
+     * @param northSpacingMetres sample spacing north-south, metres (an upper bound)
+     * @param cornersEastNorthMetres the patch's four corners relative to the eye, (east, north) pairs, metres
+     */
+    public static double riseAwayFromEye(double[] eastStepsMetres, double[] southStepsMetres, double eastSpacingMetres,
+                                         double northSpacingMetres, double[] cornersEastNorthMetres,
+                                         double directionSlackRad) {
+        double minE = Double.POSITIVE_INFINITY, maxE = Double.NEGATIVE_INFINITY;
+        double minN = Double.POSITIVE_INFINITY, maxN = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < 8; i += 2) {
+            minE = Math.min(minE, cornersEastNorthMetres[i]);
+            maxE = Math.max(maxE, cornersEastNorthMetres[i]);
+            minN = Math.min(minN, cornersEastNorthMetres[i + 1]);
+            maxN = Math.max(maxN, cornersEastNorthMetres[i + 1]);
+        }
+        if (minE <= 0 && maxE >= 0 && minN <= 0 && maxN >= 0) {
+            return 0; // the eye is over the patch: directions all around
+        }
+        double least = Double.POSITIVE_INFINITY, steepest = 0;
+        for (double eastStep : eastStepsMetres) {
+            for (double southStep : southStepsMetres) {
+                double ge = eastStep / eastSpacingMetres, gn = -southStep / northSpacingMetres;
+                steepest = Math.max(steepest, Math.hypot(ge, gn));
+                for (int i = 0; i < 8; i += 2) {
+                    double e = cornersEastNorthMetres[i], n = cornersEastNorthMetres[i + 1], len = Math.hypot(e, n);
+                    least = Math.min(least, (ge * e + gn * n) / len);
+                }
+            }
+        }
+        return Math.max(0, least - directionSlackRad * steepest);
     }
 }

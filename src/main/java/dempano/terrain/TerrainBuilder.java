@@ -218,7 +218,9 @@ public final class TerrainBuilder {
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
             LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
-                    w.rawDeviations[LEVELS], w.rawDeviations[LEVELS + 1], eye.eyeAltitudeMetres(), refraction.coefficient());
+                    w.rawDeviations[LEVELS], w.rawDeviations[LEVELS + 1],
+                    maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
+                    eye.eyeAltitudeMetres(), refraction.coefficient());
             w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
         });
         if (cache != null) {
@@ -376,12 +378,38 @@ public final class TerrainBuilder {
         return count;
     }
 
+    /**
+     * {@link LevelOfDetail#riseAwayFromEye} of a patch from its cached height steps: corners in the
+     * patch's east-north plane, spacings as upper bounds (the largest radius of curvature, the cosine
+     * of the patch's edge nearer the equator), and the meridians' convergence between eye and patch
+     * ((east offset / R) · tan φ) with room as the directions' slack.
+     */
+    private static double riseAwayFromEye(Mosaic mosaic, PatchWork w, double eyeRow, double eyeCol) {
+        int p = PATCH_INTERVALS;
+        double radians = Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        double latNorth = mosaic.latOfRow(w.row0), latSouth = latNorth - p / (double) mosaic.intervalsPerDegree();
+        double equatorward = Math.signum(latNorth) == Math.signum(latSouth) ? Math.min(Math.abs(latNorth), Math.abs(latSouth)) : 0;
+        double poleward = Math.min(89, Math.max(Math.abs(latNorth), Math.abs(latSouth)));
+        double north = 6_400_000 * radians, east = north * Math.cos(Math.toRadians(equatorward));
+        double[] corners = new double[8];
+        for (int q = 0; q < 4; q++) {
+            corners[2 * q] = (w.col0 + (q & 1) * p - eyeCol) * east;
+            corners[2 * q + 1] = (eyeRow - (w.row0 + (q >> 1) * p)) * north;
+        }
+        double slack = 0.01 + 2 * w.farthestMetres / LevelOfDetail.MIN_RADIUS_OF_CURVATURE_METRES
+                * Math.tan(Math.toRadians(poleward));
+        float[] raw = w.rawDeviations;
+        return LevelOfDetail.riseAwayFromEye(new double[] {raw[LEVELS + 2], raw[LEVELS + 3]},
+                new double[] {raw[LEVELS + 4], raw[LEVELS + 5]}, east, north, corners, slack);
+    }
+
     private static final ThreadLocal<float[]> PATCH_HEIGHTS =
             ThreadLocal.withInitial(() -> new float[(PATCH_INTERVALS + 1) * (PATCH_INTERVALS + 1)]);
 
     /**
      * A patch's deviations per level measured on the mosaic, metres (rounded up to float), then its
-     * lowest and highest sample (metres): {@link #LEVELS} + 2 values.
+     * lowest and highest sample (metres), then the least and greatest rise from a sample to its east
+     * neighbour and to its south neighbour (metres, rounded outwards): {@link #LEVELS} + 6 values.
      */
     private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
@@ -392,7 +420,7 @@ public final class TerrainBuilder {
             }
         }
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
-        float[] raw = new float[LEVELS + 2];
+        float[] raw = new float[LEVELS + 6];
         for (int l = 0; l < LEVELS; l++) {
             raw[l] = (float) dev[l] < dev[l] ? Math.nextUp((float) dev[l]) : (float) dev[l];
         }
@@ -403,6 +431,22 @@ public final class TerrainBuilder {
         }
         raw[LEVELS] = lowest;
         raw[LEVELS + 1] = highest;
+        double minEast = Double.POSITIVE_INFINITY, maxEast = Double.NEGATIVE_INFINITY;
+        double minSouth = Double.POSITIVE_INFINITY, maxSouth = Double.NEGATIVE_INFINITY;
+        for (int a = 0; a <= p; a++) {
+            for (int b = 0; b < p; b++) {
+                double east = (double) heights[a * (p + 1) + b + 1] - heights[a * (p + 1) + b];
+                double south = (double) heights[(b + 1) * (p + 1) + a] - heights[b * (p + 1) + a];
+                minEast = Math.min(minEast, east);
+                maxEast = Math.max(maxEast, east);
+                minSouth = Math.min(minSouth, south);
+                maxSouth = Math.max(maxSouth, south);
+            }
+        }
+        raw[LEVELS + 2] = Math.nextDown((float) minEast);
+        raw[LEVELS + 3] = Math.nextUp((float) maxEast);
+        raw[LEVELS + 4] = Math.nextDown((float) minSouth);
+        raw[LEVELS + 5] = Math.nextUp((float) maxSouth);
         return raw;
     }
 
