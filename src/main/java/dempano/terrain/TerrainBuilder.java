@@ -37,7 +37,9 @@ import java.util.stream.IntStream;
  *
  * <p>Level of detail: each patch is drawn with every 2^level-th sample, the level chosen by
  * {@link LevelOfDetail} from the patch's own deviations and its distance, before any vertex is placed,
- * so the cost is that of what is drawn. jME's own TerrainQuad mesh building (a flat grid at full
+ * so the cost is that of what is drawn. For a panorama (a fixed eye) the level also bounds the
+ * relative distance error of ground seen at grazing incidence
+ * ({@link LevelOfDetail#DEFAULT_MAX_DISTANCE_ERROR}), from the patch's height range and height steps. jME's own TerrainQuad mesh building (a flat grid at full
  * resolution, geomipmapping by fixed distance) is not used: the quads and patches are filled here.
  *
  * <p>Each vertex also carries, in its first texture coordinate, the terrain elevation in metres
@@ -112,7 +114,8 @@ public final class TerrainBuilder {
     /**
      * As above, and leaves out the patches {@link HorizonCulling} finds hidden from the eye: wholly
      * below the horizon of nearer terrain, or wholly below {@code cullBelowDeg} (the lowest elevation
-     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves).
+     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves; the
+     * level of detail then bounds the screen angle only, not the distance).
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
