@@ -211,10 +211,13 @@ public final class LevelOfDetail {
      * ({@code sin(1 / pixelsPerDegree degrees)}) is excepted, because there no level of detail can
      * hold the bound (q → 0 at the horizon). A ray a pixel p below the horizon of level ground
      * (depression α_h at the eye) meets it at sin θ = √(α² − α_h²) with α = α_h + p, which is ≥ p:
-     * the exception lies within the horizon row. So q_min is raised to that floor, and a patch whose
-     * every part is seen below it (even its lowest sample at its nearest point: terrain at or above the
-     * eye that does not face it, or beyond the horizon) gets no distance bound (+∞) at all: its visible
-     * parts are slopes turned towards the eye, left to the angular bound.
+     * the exception lies within the horizon row. A patch reaching the floor is bound where it is seen
+     * above it: by floor · d* (d* where its highest level ground meets the floor; exact for a flat patch
+     * such as the sea) or floor · d_near. A patch whose highest sample is seen below the floor already at
+     * its nearest point (terrain reaching the eye's altitude that does not face it, or lying beyond its
+     * horizon) gets no distance bound (+∞) at all, its lower ground included: mountains around an eye
+     * in a valley would otherwise be drawn at full resolution for their grazing parts, which are their
+     * silhouettes. The angular bound serves them.
      *
      * <p>Not a strict bound for slopes turned away from the eye within a patch that also holds level
      * ground (they are seen flatter than level ground, down to 0 at their silhouettes, as at the
@@ -230,13 +233,23 @@ public final class LevelOfDetail {
         double floor = Math.sin(Math.toRadians(1 / pixelsPerDegree));
         double k = sight.refractionCoefficient(), eye = sight.eyeAltitudeMetres(), rise = sight.riseAwayFromEye();
         double near = Math.max(0, sight.nearestMetres()), far = Math.max(near, sight.farthestMetres());
-        double best = divisorLowerBound(extremeOverDistance(eye, sight.lowestMetres(), near, far, k, false), rise);
-        if (!(best >= floor)) {
-            return Double.POSITIVE_INFINITY; // wholly excepted (grazing, beyond the horizon or above the eye)
+        double high = sight.highestMetres();
+        if (!(divisorLowerBound(sinIncidenceLowerBound(eye, high, near, k), rise) >= floor)) {
+            return Double.POSITIVE_INFINITY; // its highest ground is grazing from its nearest point on: excepted
         }
-        double worst = divisorLowerBound(extremeOverDistance(eye, sight.highestMetres(), near, far, k, true), rise);
-        // The relative error δ / (d · q) at any point of the patch is at most δ / (d_near · q_min).
-        return maxDistanceError * near * Math.max(worst, floor);
+        double worst = divisorLowerBound(extremeOverDistance(eye, high, near, far, k, true), rise);
+        if (worst >= floor) {
+            // The relative error δ / (d · q) at any point of the patch is at most δ / (d_near · q_min).
+            return maxDistanceError * near * worst;
+        }
+        // The patch reaches the grazing floor at d*. Level ground (no rise) below the eye: d · q = (H − h)
+        // − κd² falls with d, so d*'s value, floor · d*, bounds the rest; otherwise floor · d_near.
+        double kappa = (1 - k) / (2 * MIN_RADIUS_OF_CURVATURE_METRES), above = eye - high;
+        double reach = near;
+        if (rise <= 0 && above > 0 && kappa > 0) {
+            reach = Math.max(near, 2 * above / (floor + Math.sqrt(floor * floor + 4 * kappa * above)));
+        }
+        return maxDistanceError * reach * floor;
     }
 
     /**

@@ -191,7 +191,7 @@ class LevelOfDetailTest {
     }
 
     @Test
-    void theHorizonAndGroundAboveTheEyeAreExceptedButAPatchReachingTheHorizonIsBoundAtTheFloor() {
+    void theHorizonAndGroundReachingTheEyeAreExceptedButAPatchReachingTheHorizonIsBoundAtTheFloor() {
         double floor = Math.sin(Math.toRadians(1 / 20.0));
         // Wholly beyond the 2 m sea horizon (5.0 km): no distance bound.
         assertEquals(Double.POSITIVE_INFINITY,
@@ -201,9 +201,23 @@ class LevelOfDetailTest {
         LevelOfDetail.Sight above = sight(5_000, 13_000, 1_500, 2_500, 0, 1_000, 0.13);
         assertEquals(Double.POSITIVE_INFINITY, LevelOfDetail.allowedDeviationForDistanceMetres(above, 20, 0.002));
         assertEquals(LevelOfDetail.chooseLevel(dev, 5_000, 20, 0.5), LevelOfDetail.chooseLevel(dev, above, 20, 0.5, 0.002));
-        // The sea from 1 to 9 km seen from 2 m reaches past its horizon: bound at the floor at its nearest point.
-        assertEquals(0.002 * 1_000 * floor,
-                LevelOfDetail.allowedDeviationForDistanceMetres(sight(1_000, 9_000, 0, 0, 0, 2, 0), 20, 0.002), 1e-12);
+        // Terrain reaching the eye's altitude, with low ground too: its grazing parts are its silhouettes.
+        assertEquals(Double.POSITIVE_INFINITY, LevelOfDetail.allowedDeviationForDistanceMetres(
+                sight(5_000, 13_000, 0, 1_100, 0, 1_000, 0.13), 20, 0.002));
+        // The sea from 1 to 9 km seen from 2 m reaches past its horizon (5.0 km): bound where it is seen at
+        // the floor, d* (2/d − d/2R = floor, by bisection), by ε · d* · floor.
+        double lo = 1_000, hi = 9_000;
+        for (int i = 0; i < 100; i++) {
+            double mid = (lo + hi) / 2;
+            if (2 / mid - mid / (2 * R) > floor) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        assertTrue(lo > 1_900 && lo < 2_000, "d* " + lo);
+        assertEquals(0.002 * lo * floor,
+                LevelOfDetail.allowedDeviationForDistanceMetres(sight(1_000, 9_000, 0, 0, 0, 2, 0), 20, 0.002), 1e-9);
     }
 
     @Test
