@@ -131,7 +131,7 @@ class TerrainBuilderTest {
         assertArrayEquals(panoramaBuild(dem, 46.5, 8.5, 2, null).patchesPerLevel(), low.patchesPerLevel());
         // Another eye (higher, elsewhere) over the same cached patches: its own heights, distances and
         // directions decide, as in a build without the cache.
-        for (double[] eye : new double[][] {{46.5, 8.5, 1500}, {46.42, 8.41, 400}}) {
+        for (double[] eye : new double[][] {{46.5, 8.5, 1500}, {46.42, 8.41, 400}, {46.48, 8.55, 5000}}) {
             TerrainBuilder.Terrain cached = panoramaBuild(dem, eye[0], eye[1], eye[2], cache);
             TerrainBuilder.Terrain fresh = panoramaBuild(dem, eye[0], eye[1], eye[2], null);
             assertArrayEquals(fresh.patchesPerLevel(), cached.patchesPerLevel(), java.util.Arrays.toString(eye));
