@@ -130,7 +130,6 @@ public final class LevelOfDetail {
      *
      * @param nearestMetres         horizontal distance from the eye to the patch's nearest point (a lower bound)
      * @param farthestMetres        to its farthest point (an upper bound), ≥ {@code nearestMetres}
-     * @param lowestMetres          the patch's lowest sample
      * @param highestMetres         the patch's highest sample
      * @param riseAwayFromEye       a lower bound of how steeply every facet of the patch rises away from the
      *                              eye (the gradient's component along the horizontal direction of the
@@ -139,7 +138,7 @@ public final class LevelOfDetail {
      * @param eyeAltitudeMetres     the eye's altitude
      * @param refractionCoefficient k: light bends with the earth, which then looks flatter, radius R/(1 − k)
      */
-    public record Sight(double nearestMetres, double farthestMetres, double lowestMetres, double highestMetres,
+    public record Sight(double nearestMetres, double farthestMetres, double highestMetres,
                         double riseAwayFromEye, double eyeAltitudeMetres, double refractionCoefficient) {
     }
 
@@ -172,19 +171,16 @@ public final class LevelOfDetail {
     }
 
     /**
-     * The extreme of {@link #sinIncidenceLowerBound} over distances in [near, far] for ground at one
+     * The least of {@link #sinIncidenceLowerBound} over distances in [near, far] for ground at one
      * height: f(d) = A/d − κd is monotonic, or has its one turning point at √(−A/κ).
      */
-    private static double extremeOverDistance(double eye, double ground, double near, double far, double k,
-                                              boolean lowest) {
-        double a = sinIncidenceLowerBound(eye, ground, near, k), b = sinIncidenceLowerBound(eye, ground, far, k);
-        double best = lowest ? Math.min(a, b) : Math.max(a, b);
+    private static double leastOverDistance(double eye, double ground, double near, double far, double k) {
+        double least = Math.min(sinIncidenceLowerBound(eye, ground, near, k), sinIncidenceLowerBound(eye, ground, far, k));
         double turn = Math.sqrt(-(eye - ground) / ((1 - k) / (2 * MIN_RADIUS_OF_CURVATURE_METRES)));
         if (turn > near && turn < far) {
-            double c = sinIncidenceLowerBound(eye, ground, turn, k);
-            best = lowest ? Math.min(best, c) : Math.max(best, c);
+            least = Math.min(least, sinIncidenceLowerBound(eye, ground, turn, k));
         }
-        return best;
+        return least;
     }
 
     /**
@@ -237,7 +233,7 @@ public final class LevelOfDetail {
         if (!(divisorLowerBound(sinIncidenceLowerBound(eye, high, near, k), rise) >= floor)) {
             return Double.POSITIVE_INFINITY; // its highest ground is grazing from its nearest point on: excepted
         }
-        double worst = divisorLowerBound(extremeOverDistance(eye, high, near, far, k, true), rise);
+        double worst = divisorLowerBound(leastOverDistance(eye, high, near, far, k), rise);
         if (worst >= floor) {
             // The relative error δ / (d · q) at any point of the patch is at most δ / (d_near · q_min).
             return maxDistanceError * near * worst;

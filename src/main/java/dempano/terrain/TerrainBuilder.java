@@ -221,8 +221,7 @@ public final class TerrainBuilder {
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
             LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
-                    w.rawDeviations[LEVELS], w.rawDeviations[LEVELS + 1],
-                    maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
+                    w.rawDeviations[LEVELS + 1], maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
                     eye.eyeAltitudeMetres(), refraction.coefficient());
             w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
         });

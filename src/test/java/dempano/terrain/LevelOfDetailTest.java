@@ -154,8 +154,8 @@ class LevelOfDetailTest {
         return dev;
     }
 
-    static LevelOfDetail.Sight sight(double near, double far, double low, double high, double rise, double eye, double k) {
-        return new LevelOfDetail.Sight(near, far, low, high, rise, eye, k);
+    static LevelOfDetail.Sight sight(double near, double far, double high, double rise, double eye, double k) {
+        return new LevelOfDetail.Sight(near, far, high, rise, eye, k);
     }
 
     @Test
@@ -167,7 +167,7 @@ class LevelOfDetailTest {
             for (double eye : new double[] {2, 10, 100, 1000}) {
                 for (double near : new double[] {300, 1_000, 3_000, 10_000, 30_000, 60_000}) {
                     double far = near + 8_000; // an SRTM3 patch's diagonal
-                    int level = LevelOfDetail.chooseLevel(dev, sight(near, far, 0, 0, 0, eye, k), ppd, 0.5, eps);
+                    int level = LevelOfDetail.chooseLevel(dev, sight(near, far, 0, 0, eye, k), ppd, 0.5, eps);
                     int angular = LevelOfDetail.chooseLevel(dev, near, ppd, 0.5);
                     assertTrue(level <= angular);
                     refined += level < angular ? 1 : 0;
@@ -195,15 +195,15 @@ class LevelOfDetailTest {
         double floor = Math.sin(Math.toRadians(1 / 20.0));
         // Wholly beyond the 2 m sea horizon (5.0 km): no distance bound.
         assertEquals(Double.POSITIVE_INFINITY,
-                LevelOfDetail.allowedDeviationForDistanceMetres(sight(6_000, 14_000, 0, 0, 0, 2, 0), 20, 0.002));
+                LevelOfDetail.allowedDeviationForDistanceMetres(sight(6_000, 14_000, 0, 0, 2, 0), 20, 0.002));
         // Level terrain above the eye: only slopes facing the eye are seen; the angle decides.
         double[] dev = {0, 1, 2, 4, 8, 16, 32};
-        LevelOfDetail.Sight above = sight(5_000, 13_000, 1_500, 2_500, 0, 1_000, 0.13);
+        LevelOfDetail.Sight above = sight(5_000, 13_000, 2_500, 0, 1_000, 0.13);
         assertEquals(Double.POSITIVE_INFINITY, LevelOfDetail.allowedDeviationForDistanceMetres(above, 20, 0.002));
         assertEquals(LevelOfDetail.chooseLevel(dev, 5_000, 20, 0.5), LevelOfDetail.chooseLevel(dev, above, 20, 0.5, 0.002));
-        // Terrain reaching the eye's altitude, with low ground too: its grazing parts are its silhouettes.
+        // Terrain reaching the eye's altitude, whatever low ground it also holds: its grazing parts are its silhouettes.
         assertEquals(Double.POSITIVE_INFINITY, LevelOfDetail.allowedDeviationForDistanceMetres(
-                sight(5_000, 13_000, 0, 1_100, 0, 1_000, 0.13), 20, 0.002));
+                sight(5_000, 13_000, 1_100, 0, 1_000, 0.13), 20, 0.002));
         // The sea from 1 to 9 km seen from 2 m reaches past its horizon (5.0 km): bound where it is seen at
         // the floor, d* (2/d − d/2R = floor, by bisection), by ε · d* · floor.
         double lo = 1_000, hi = 9_000;
@@ -217,7 +217,7 @@ class LevelOfDetailTest {
         }
         assertTrue(lo > 1_900 && lo < 2_000, "d* " + lo);
         assertEquals(0.002 * lo * floor,
-                LevelOfDetail.allowedDeviationForDistanceMetres(sight(1_000, 9_000, 0, 0, 0, 2, 0), 20, 0.002), 1e-9);
+                LevelOfDetail.allowedDeviationForDistanceMetres(sight(1_000, 9_000, 0, 0, 2, 0), 20, 0.002), 1e-9);
     }
 
     @Test
@@ -226,21 +226,21 @@ class LevelOfDetailTest {
         int angular = LevelOfDetail.chooseLevel(dev, 5_000, 20, 0.5);
         assertTrue(angular >= 1);
         // A face rising 1:2 away from an eye above it.
-        LevelOfDetail.Sight facing = sight(5_000, 13_000, 500, 3_000, 0.5, 3_500, 0.13);
+        LevelOfDetail.Sight facing = sight(5_000, 13_000, 3_000, 0.5, 3_500, 0.13);
         assertEquals(angular, LevelOfDetail.chooseLevel(dev, facing, 20, 0.5, 0.002));
         // The same heights with level (or turned away) parts somewhere: refined.
-        LevelOfDetail.Sight mixed = sight(5_000, 13_000, 500, 3_000, 0, 3_500, 0.13);
+        LevelOfDetail.Sight mixed = sight(5_000, 13_000, 3_000, 0, 3_500, 0.13);
         assertTrue(LevelOfDetail.chooseLevel(dev, mixed, 20, 0.5, 0.002) < angular);
     }
 
     @Test
     void zeroBoundsGiveFullResolutionOrTheAngleAlone() {
         double[] dev = flatDeviations(0.13);
-        LevelOfDetail.Sight sea = sight(10_000, 18_000, 0, 0, 0, 100, 0.13);
+        LevelOfDetail.Sight sea = sight(10_000, 18_000, 0, 0, 100, 0.13);
         assertEquals(0, LevelOfDetail.chooseLevel(dev, sea, 20, 0, 0.002), "0 px = full resolution");
         assertEquals(LevelOfDetail.chooseLevel(dev, 10_000, 20, 0.5), LevelOfDetail.chooseLevel(dev, sea, 20, 0.5, 0));
         // The patch under the eye: no distance bound can hold; full resolution, unless nothing is lost (a plane).
-        LevelOfDetail.Sight under = sight(0, 8_000, 0, 0, 0, 100, 0.13);
+        LevelOfDetail.Sight under = sight(0, 8_000, 0, 0, 100, 0.13);
         assertEquals(0, LevelOfDetail.chooseLevel(dev, under, 20, 0.5, 0.002));
         assertEquals(6, LevelOfDetail.chooseLevel(new double[7], under, 20, 0.5, 0.002));
     }
