@@ -41,7 +41,8 @@ public final class DeviationCache {
 
     /**
      * Hands each item the cached values of its key, where held: deviations per level (metres, no
-     * chord sag), then the patch's lowest and highest sample (metres).
+     * chord sag), then the patch's lowest and highest sample (metres), then its least and greatest
+     * height steps east and south (metres): all from the heights alone, nothing from the eye.
      */
     <T> void lookUp(List<T> items, Function<T, Key> key, BiConsumer<T, float[]> found) {
         synchronized (map) {

@@ -37,7 +37,9 @@ import java.util.stream.IntStream;
  *
  * <p>Level of detail: each patch is drawn with every 2^level-th sample, the level chosen by
  * {@link LevelOfDetail} from the patch's own deviations and its distance, before any vertex is placed,
- * so the cost is that of what is drawn. jME's own TerrainQuad mesh building (a flat grid at full
+ * so the cost is that of what is drawn. For a panorama (a fixed eye) the level also bounds the
+ * relative distance error of ground seen at grazing incidence
+ * ({@link LevelOfDetail#DEFAULT_MAX_DISTANCE_ERROR}), from the patch's height range and height steps. jME's own TerrainQuad mesh building (a flat grid at full
  * resolution, geomipmapping by fixed distance) is not used: the quads and patches are filled here.
  *
  * <p>Each vertex also carries, in its first texture coordinate, the terrain elevation in metres
@@ -118,7 +120,8 @@ public final class TerrainBuilder {
     /**
      * As above, and leaves out the patches {@link HorizonCulling} finds hidden from the eye: wholly
      * below the horizon of nearer terrain, or wholly below {@code cullBelowDeg} (the lowest elevation
-     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves).
+     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves; the
+     * level of detail then bounds the screen angle only, not the distance).
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
@@ -181,6 +184,10 @@ public final class TerrainBuilder {
         }
         // Pass 1 (parallel): distance and deviations from the heights alone; choose the level.
         double rowMetresExact = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        double cosMax = Math.cos(Math.toRadians(Math.max(0, Math.abs(eye.latDeg()) - rangeMetres / 111_000.0 - 0.01)));
+        // The distance bound needs a fixed eye (a panorama; not a fly-through, whose eye moves).
+        double maxDistanceError = !Double.isNaN(cullBelowDeg) && exaggeration == 1
+                ? LevelOfDetail.DEFAULT_MAX_DISTANCE_ERROR : 0;
         List<PatchWork> inRange = new ArrayList<>();
         for (PatchWork w : candidates) {
             // Nearest point of the patch to the eye, horizontally, as a lower bound (slightly short rows
@@ -188,6 +195,10 @@ public final class TerrainBuilder {
             double dr = Math.max(0, Math.max(w.row0 - eyeRow, eyeRow - (w.row0 + p))) * rowMetresExact * 0.995;
             double dc = Math.max(0, Math.max(w.col0 - eyeCol, eyeCol - (w.col0 + p))) * rowMetresExact * cosMin * 0.995;
             w.nearestMetres = Math.hypot(dr, dc);
+            // Farthest point, as an upper bound (long rows and columns: the cosine nearest the equator).
+            double fr = Math.max(Math.abs(w.row0 - eyeRow), Math.abs(w.row0 + p - eyeRow)) * rowMetresExact * 1.005;
+            double fc = Math.max(Math.abs(w.col0 - eyeCol), Math.abs(w.col0 + p - eyeCol)) * rowMetresExact * cosMax * 1.005;
+            w.farthestMetres = Math.hypot(fr, fc);
             if (w.nearestMetres > rangeMetres + 2000) {
                 w.nearestMetres = Double.NaN; // beyond range: dropped
             } else {
@@ -215,7 +226,10 @@ public final class TerrainBuilder {
                 w.deviations[level] = w.rawDeviations[level]
                         + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
             }
-            w.level = LevelOfDetail.chooseLevel(w.deviations, w.nearestMetres, pixelsPerDegree, maxErrorPx);
+            LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
+                    w.rawDeviations[LEVELS + 1], maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
+                    eye.eyeAltitudeMetres(), refraction.coefficient());
+            w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
         });
         if (cache != null) {
             cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
@@ -378,12 +392,38 @@ public final class TerrainBuilder {
         return count;
     }
 
+    /**
+     * {@link LevelOfDetail#riseAwayFromEye} of a patch from its cached height steps: corners in the
+     * patch's east-north plane, spacings as upper bounds (the largest radius of curvature, the cosine
+     * of the patch's edge nearer the equator), and the meridians' convergence between eye and patch
+     * ((east offset / R) · tan φ) with room as the directions' slack.
+     */
+    private static double riseAwayFromEye(Mosaic mosaic, PatchWork w, double eyeRow, double eyeCol) {
+        int p = PATCH_INTERVALS;
+        double radians = Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        double latNorth = mosaic.latOfRow(w.row0), latSouth = latNorth - p / (double) mosaic.intervalsPerDegree();
+        double equatorward = Math.signum(latNorth) == Math.signum(latSouth) ? Math.min(Math.abs(latNorth), Math.abs(latSouth)) : 0;
+        double poleward = Math.min(89, Math.max(Math.abs(latNorth), Math.abs(latSouth)));
+        double north = 6_400_000 * radians, east = north * Math.cos(Math.toRadians(equatorward));
+        double[] corners = new double[8];
+        for (int q = 0; q < 4; q++) {
+            corners[2 * q] = (w.col0 + (q & 1) * p - eyeCol) * east;
+            corners[2 * q + 1] = (eyeRow - (w.row0 + (q >> 1) * p)) * north;
+        }
+        double slack = 0.01 + 2 * w.farthestMetres / LevelOfDetail.MIN_RADIUS_OF_CURVATURE_METRES
+                * Math.tan(Math.toRadians(poleward));
+        float[] raw = w.rawDeviations;
+        return LevelOfDetail.riseAwayFromEye(new double[] {raw[LEVELS + 2], raw[LEVELS + 3]},
+                new double[] {raw[LEVELS + 4], raw[LEVELS + 5]}, east, north, corners, slack);
+    }
+
     private static final ThreadLocal<float[]> PATCH_HEIGHTS =
             ThreadLocal.withInitial(() -> new float[(PATCH_INTERVALS + 1) * (PATCH_INTERVALS + 1)]);
 
     /**
      * A patch's deviations per level measured on the mosaic, metres (rounded up to float), then its
-     * lowest and highest sample (metres): {@link #LEVELS} + 2 values.
+     * lowest and highest sample (metres), then the least and greatest rise from a sample to its east
+     * neighbour and to its south neighbour (metres, rounded outwards): {@link #LEVELS} + 6 values.
      */
     private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
@@ -394,7 +434,7 @@ public final class TerrainBuilder {
             }
         }
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
-        float[] raw = new float[LEVELS + 2];
+        float[] raw = new float[LEVELS + 6];
         for (int l = 0; l < LEVELS; l++) {
             raw[l] = (float) dev[l] < dev[l] ? Math.nextUp((float) dev[l]) : (float) dev[l];
         }
@@ -405,6 +445,22 @@ public final class TerrainBuilder {
         }
         raw[LEVELS] = lowest;
         raw[LEVELS + 1] = highest;
+        double minEast = Double.POSITIVE_INFINITY, maxEast = Double.NEGATIVE_INFINITY;
+        double minSouth = Double.POSITIVE_INFINITY, maxSouth = Double.NEGATIVE_INFINITY;
+        for (int a = 0; a <= p; a++) {
+            for (int b = 0; b < p; b++) {
+                double east = (double) heights[a * (p + 1) + b + 1] - heights[a * (p + 1) + b];
+                double south = (double) heights[(b + 1) * (p + 1) + a] - heights[b * (p + 1) + a];
+                minEast = Math.min(minEast, east);
+                maxEast = Math.max(maxEast, east);
+                minSouth = Math.min(minSouth, south);
+                maxSouth = Math.max(maxSouth, south);
+            }
+        }
+        raw[LEVELS + 2] = Math.nextDown((float) minEast);
+        raw[LEVELS + 3] = Math.nextUp((float) maxEast);
+        raw[LEVELS + 4] = Math.nextDown((float) minSouth);
+        raw[LEVELS + 5] = Math.nextUp((float) maxSouth);
         return raw;
     }
 
@@ -453,7 +509,7 @@ public final class TerrainBuilder {
         DeviationCache.Key cacheKey;
         float[] rawDeviations;
         boolean cacheable, fromCache, hidden;
-        double nearestMetres;
+        double nearestMetres, farthestMetres;
         double[] deviations;
         double[] skirts;
         MeshCache.Key meshKey;

@@ -109,6 +109,39 @@ class TerrainBuilderTest {
                 "without a cache every geometry is made for the build (and released after it)");
     }
 
+    static TerrainBuilder.Terrain panoramaBuild(DemSource dem, double lat, double lon, double eyeHeightMetres,
+                                                DeviationCache cache) {
+        Mosaic m = Mosaic.around(dem, lat, lon, 40_000, MissingTilePolicy.SEA_LEVEL);
+        Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, eyeHeightMetres);
+        // A cull angle: a panorama's build, whose fixed eye the distance bound needs.
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), 40_000, null, 20, 0.5, 1, cache, null, -30);
+    }
+
+    /** A rippled slope rising northwards (every facet rises north, 6 % to 24 %) north of 46.45°, the sea south of it. */
+    static double slope(double lat, double lon) {
+        double y = Math.max(0, (lat - 46.45) * 111_195);
+        return 0.15 * y + 15 * (1 - Math.cos(2 * Math.PI * y / 1_000));
+    }
+
+    @Test
+    void cachedPatchBoundsServeTheDistanceBoundOfAnyEye() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::slope, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        DeviationCache cache = new DeviationCache();
+        TerrainBuilder.Terrain low = panoramaBuild(dem, 46.5, 8.5, 2, cache);
+        assertArrayEquals(panoramaBuild(dem, 46.5, 8.5, 2, null).patchesPerLevel(), low.patchesPerLevel());
+        // Another eye (higher, elsewhere) over the same cached patches: its own heights, distances and
+        // directions decide, as in a build without the cache.
+        for (double[] eye : new double[][] {{46.5, 8.5, 1500}, {46.42, 8.41, 400}, {46.48, 8.55, 5000}}) {
+            TerrainBuilder.Terrain cached = panoramaBuild(dem, eye[0], eye[1], eye[2], cache);
+            TerrainBuilder.Terrain fresh = panoramaBuild(dem, eye[0], eye[1], eye[2], null);
+            assertArrayEquals(fresh.patchesPerLevel(), cached.patchesPerLevel(), java.util.Arrays.toString(eye));
+            assertEquals(fresh.triangles(), cached.triangles());
+            assertTrue(cached.reusedPatches() == 0 && cache.size() > 0.5 * cached.patches());
+        }
+        assertTrue(!java.util.Arrays.equals(low.patchesPerLevel(), panoramaBuild(dem, 46.5, 8.5, 1500, cache).patchesPerLevel()),
+                "the eye's height changes the levels");
+    }
+
     private static int countMerged(TerrainBuilder.Terrain t) {
         int merged = 0;
         for (com.jme3.scene.Geometry g : t.transientParts()) {
