@@ -198,7 +198,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                 inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
             }
             Stitcher.Result stitched = Stitcher.stitch(geometry, layout, captures, inverseEyeDepth,
-                    new Stitcher.Exact(seen, Boolean.getBoolean("dempano.noProbe") ? null : new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())),
+                    new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())),
                     argb, distance);
             exactness = stitched;
             progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
