@@ -142,6 +142,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
         ViewCapture[] captures;
         SeenTriangles seen = null;
+        boolean exact = req.distance() && req.exactDistances();
         long triangles;
         // The mesh cache's geometries can be in one scene at a time, so it is held from building to
         // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
@@ -158,14 +159,17 @@ public final class PanoramaRenderer implements AutoCloseable {
             try {
                 // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
                 captures = gl.render(terrain.root(), new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far,
-                        req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), req.distance(), false),
+                        req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), exact, false),
                         drawAndRead);
-                if (req.distance()) {
+                if (exact) {
                     // While the geometries' buffers live: the triangles seen, in double precision.
                     long beforeResolve = System.nanoTime();
                     seen = SeenTriangleResolver.resolve(terrain.drawn(), captures, new EyePlacement(eye, req.refraction()),
                             req.rangeMetres());
                     resolveNanos = System.nanoTime() - beforeResolve;
+                    for (int k = 0; k < captures.length; k++) { // the raw ids are no longer needed
+                        captures[k] = new ViewCapture(captures[k].view(), captures[k].rgba(), captures[k].depth());
+                    }
                 }
             } finally {
                 terrain.root().detachAllChildren();
@@ -178,7 +182,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1] - resolveNanos) / 1e6);
             timings.put("draw", drawAndRead[0] / 1e6);
             timings.put("readback", drawAndRead[1] / 1e6);
-            if (req.distance()) {
+            if (exact) {
                 timings.put("triangles", resolveNanos / 1e6);
             }
             t = afterRender;
@@ -198,10 +202,10 @@ public final class PanoramaRenderer implements AutoCloseable {
                 inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
             }
             Stitcher.Result stitched = Stitcher.stitch(geometry, layout, captures, inverseEyeDepth,
-                    new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())),
+                    exact ? new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())) : null,
                     argb, distance);
             exactness = stitched;
-            progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
+            if (exact) progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
                     + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
         } else {
             Stitcher.stitchColour(geometry, layout, captures, argb, distance);
