@@ -195,7 +195,6 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("stitching");
         int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
         float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
-        Stitcher.Result exactness = null;
         if (req.distance()) {
             float[][] inverseEyeDepth = new float[captures.length][];
             for (int k = 0; k < captures.length; k++) {
@@ -204,9 +203,10 @@ public final class PanoramaRenderer implements AutoCloseable {
             Stitcher.Result stitched = Stitcher.stitch(geometry, layout, captures, inverseEyeDepth,
                     exact ? new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())) : null,
                     argb, distance);
-            exactness = stitched;
-            if (exact) progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
-                    + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
+            if (exact) {
+                progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
+                        + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
+            }
         } else {
             Stitcher.stitchColour(geometry, layout, captures, argb, distance);
         }

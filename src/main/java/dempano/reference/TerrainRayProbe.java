@@ -6,6 +6,7 @@ import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
 import dempano.panorama.RayProbe;
+import dempano.terrain.LevelOfDetail;
 import dempano.terrain.Triangulation;
 
 /**
@@ -105,12 +106,7 @@ public final class TerrainRayProbe implements RayProbe {
         }
         double v = row - r, w = col - c; // south and east fractions
         double nw = height(r, c), ne = height(r, c + 1), sw = height(r + 1, c), se = height(r + 1, c + 1);
-        double surface;
-        if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
-            surface = w >= v ? nw + w * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + w * (se - sw);
-        } else {
-            surface = w + v <= 1 ? nw + w * (ne - nw) + v * (sw - nw) : se + (1 - w) * (sw - se) + (1 - v) * (ne - se);
-        }
+        double surface = LevelOfDetail.interpolate(nw, ne, sw, se, w, v, Triangulation.splitsNorthWestToSouthEast(r, c));
         double[] foot = new double[3];
         Ellipsoid.toEcef(geo[0], geo[1], 0, foot);
         return geo[2] - surface - refraction.liftMetres(Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot));

@@ -92,7 +92,7 @@ public final class LevelOfDetail {
      * @param u east fraction [0, 1]
      * @param v south fraction [0, 1]
      */
-    static double interpolate(double nw, double ne, double sw, double se, double u, double v, boolean nwToSe) {
+    public static double interpolate(double nw, double ne, double sw, double se, double u, double v, boolean nwToSe) {
         if (nwToSe) {
             return u >= v ? nw + u * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + u * (se - sw);
         }

@@ -7,6 +7,7 @@ import dempano.PanoramaRequest;
 import dempano.Synthetic;
 import dempano.dem.InMemoryDem;
 import dempano.geo.Ellipsoid;
+import dempano.geo.EllipsoidRay;
 import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.panorama.ElevationRange;
@@ -29,25 +30,6 @@ import org.junit.jupiter.params.provider.MethodSource;
  * by a hundredth of a degree.
  */
 class ExactDistanceTest {
-    /**
-     * Distance along a ray from an ECEF point to the WGS84 ellipsoid (h = 0), metres; +∞ when the ray
-     * misses it. Closed form: the ray scaled into the unit sphere's space, a quadratic.
-     */
-    static double rayToEllipsoid(double[] origin, double[] dir) {
-        double a = Ellipsoid.A_METRES, b = Ellipsoid.B_METRES;
-        double ox = origin[0] / a, oy = origin[1] / a, oz = origin[2] / b;
-        double dx = dir[0] / a, dy = dir[1] / a, dz = dir[2] / b;
-        double qa = dx * dx + dy * dy + dz * dz, qb = 2 * (ox * dx + oy * dy + oz * dz), qc = ox * ox + oy * oy + oz * oz - 1;
-        double disc = qb * qb - 4 * qa * qc;
-        if (disc < 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        // The nearer root, in the cancellation-free form.
-        double q = -0.5 * (qb + Math.copySign(Math.sqrt(disc), qb));
-        double t = Math.min(q / qa, qc / q);
-        return t > 0 ? t : Double.POSITIVE_INFINITY;
-    }
-
     /** The closed-form distance of every pixel of a panorama from an eye at {@code heightMetres} above the sea. */
     static double[] seaTruth(Panorama p, double latDeg, double lonDeg, double heightMetres) {
         LocalFrame f = new LocalFrame(latDeg, lonDeg, heightMetres);
@@ -60,7 +42,7 @@ class ExactDistanceTest {
                 double az = Math.toRadians(p.azimuthOfColumn(col));
                 f.enuToEcef(Math.cos(el) * Math.sin(az), Math.cos(el) * Math.cos(az), Math.sin(el), tip);
                 double[] dir = {tip[0] - eye[0], tip[1] - eye[1], tip[2] - eye[2]};
-                truth[row * p.widthPx() + col] = rayToEllipsoid(eye, dir);
+                truth[row * p.widthPx() + col] = EllipsoidRay.distanceToWgs84Metres(eye, dir);
             }
         }
         return truth;
