@@ -204,7 +204,8 @@ public final class PanoramaRenderer implements AutoCloseable {
                     exact ? new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())) : null,
                     argb, distance);
             if (exact) {
-                progress.accept("distances: " + stitched.exactPixels() + " pixels from the triangles seen, "
+                progress.accept("distances: " + stitched.exactPixels() + " pixels from the " + seen.triangles()
+                        + " triangles seen, "
                         + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
             }
         } else {

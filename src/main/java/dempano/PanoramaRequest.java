@@ -104,7 +104,7 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
         return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
                 DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
                 DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true, Double.NaN, Double.NaN, false);
+                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true, Double.NaN, Double.NaN, true);
     }
 
     public PanoramaRequest withOffsetMetres(double v) {
@@ -216,7 +216,9 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
     /**
      * Exact per-pixel distances: each pixel's distance measured along its own centre ray against the
      * triangles the views saw, the terrain probed where none is met (see {@link dempano.panorama.Stitcher}).
-     * Off by default for now: it costs about a second more per 7200 × 1200 panorama on 2 cores.
+     * On by default. Off, distances interpolate the views' inverse depth: faster (about 0.5 s less per
+     * 7200 × 1200 panorama on 2 cores), exact on planes, but tens of per cent off at grazing incidence
+     * and at silhouettes, where a pixel takes a neighbouring sample's ray.
      */
     public PanoramaRequest withExactDistances(boolean v) {
         PanoramaRequest r = this;

@@ -92,7 +92,8 @@ public final class Main implements Callable<Integer> {
 
     @Option(names = "--repeat", description = "Render this many times in one process and print a timing table (cold = run 1, warm = the rest); files are written once (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     int repeat;
-    @Option(names = "--exact-distances", description = "Measure every pixel's distance along its own centre ray (exact at grazing incidence and at silhouettes; about a second slower per 7200×1200 panorama).")
+    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "Measure every pixel's distance along its own centre ray (exact at grazing incidence and at silhouettes; default). --no-exact-distances interpolates the views' depth instead: faster, but tens of per cent off at grazing incidence.")
     boolean exactDistances;
 
     @Option(names = "--lod-px", paramLabel = "PX", description = "Bound on the screen error of simplified distant terrain, panorama pixels; 0 = full resolution everywhere (default: ${DEFAULT-VALUE}).", defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)

@@ -15,8 +15,11 @@ public interface RayProbe {
      * @param fromMetres a distance at which the ray is expected above the terrain (searched from
      *                   nearer the eye when it is not)
      * @param toMetres   how far to search
+     * @param fine       steps of at most a DEM cell, so that only a crest the ray crosses over less
+     *                   than a cell can be stepped over: slower, for rays beside the sky, where
+     *                   stepping over a crest moves the skyline
      * @return the distance, metres; +∞ when the ray stays above the terrain out to the range of sight
      *         (or leaves the DEM); NaN when it stays above out to {@code toMetres} only (undecided)
      */
-    double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres);
+    double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres, boolean fine);
 }

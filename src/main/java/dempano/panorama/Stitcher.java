@@ -127,6 +127,7 @@ public final class Stitcher {
             secOfCol[col] = Math.sqrt(1 + q[2] * q[2]);
         }
         double yScale = layout.heightPx() / (layout.topTan() - layout.bottomTan());
+        int[][] topTerrainRow = seen == null ? null : topTerrainRows(seen.triangleOfSample(), layout);
         java.util.concurrent.atomic.LongAdder exactCount = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
@@ -157,16 +158,23 @@ public final class Stitcher {
                 if (seen != null) {
                     // The pixel's own ray in the eye's frame (jME axes: east, up, south).
                     double dx = cosEl * sinAz[col], dy = sinEl, dz = -cosEl * cosAz[col];
-                    r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
+                    int x0 = (int) Math.floor(p[0]);
+                    if (skyAround(topTerrainRow[view], x0, (int) Math.floor(p[1]))) {
+                        r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
+                    } else {
+                        r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
+                    }
                     if (!Double.isNaN(r)) {
                         rowExact++;
                     } else if (probe != null
-                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500))) {
-                        rowProbed++;
+                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500, hint[0] > 0))
+                            && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
+                        rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
                     } else if (hint[0] > 0) {
                         r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
                         rowExact++;
                     } else {
+                        r = Double.NaN;
                         rowFallback++;
                     }
                 }
@@ -177,6 +185,42 @@ public final class Stitcher {
             fallback.add(rowFallback);
         });
         return new Result(exactCount.sum(), probed.sum(), fallback.sum());
+    }
+
+    /**
+     * Per view and sample column, the highest sample row (GL rows, 0 at the bottom) where terrain
+     * was seen, −1 where none was: above it a column is all sky. Scans each view from the top down,
+     * so it reads only the sky and the first terrain row of each column.
+     */
+    static int[][] topTerrainRows(int[][] triangleOfSample, ViewLayout layout) {
+        int w = layout.widthPx(), h = layout.heightPx();
+        int[][] out = new int[triangleOfSample.length][];
+        for (int v = 0; v < out.length; v++) {
+            int[] tri = triangleOfSample[v], top = new int[w];
+            java.util.Arrays.fill(top, -1);
+            int open = w;
+            for (int y = h - 1; y >= 0 && open > 0; y--) {
+                for (int x = 0, i = y * w; x < w; x++, i++) {
+                    if (top[x] < 0 && tri[i] >= 0) {
+                        top[x] = y;
+                        open--;
+                    }
+                }
+            }
+            out[v] = top;
+        }
+        return out;
+    }
+
+    /** Whether every sample of the 4×4 block around (x0 + ½, y0 + ½) is sky (or outside the view). */
+    static boolean skyAround(int[] topTerrainRow, int x0, int y0) {
+        int lowest = y0 - 1;
+        for (int x = Math.max(0, x0 - 1), end = Math.min(topTerrainRow.length - 1, x0 + 2); x <= end; x++) {
+            if (topTerrainRow[x] >= lowest) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
