@@ -109,7 +109,7 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--clear-view-m", paramLabel = "R", description = "Raise the eye until no terrain within R metres rises above its horizontal (+0.5 m); the lift is reported.")
     Double clearViewMetres;
     @Option(names = "--void-fill", paramLabel = "thin-plate|laplace|idw", defaultValue = "thin-plate",
-            description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the fill before 0.1). Compared on surveyed summits in docs/void-fill.md.")
+            description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the previous default). Compared on surveyed summits in docs/void-fill.md.")
     String voidFill;
 
     public static void main(String[] args) {
@@ -276,7 +276,8 @@ public final class Main implements Callable<Integer> {
             for (String w : p.metadata().warnings()) {
                 System.err.println("  warning: " + w);
             }
-            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null : p.summits(summitList);
+            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null
+                    : dempano.summits.SummitProjector.withDem(p.summits(summitList), dem);
             files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(pfm, sightings, labelOptions));
             set.commit();
             if (sightings != null) {
