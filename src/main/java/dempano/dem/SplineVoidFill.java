@@ -33,11 +33,11 @@ final class SplineVoidFill {
      * Iterations per grid level: at most this many void-sample updates in all (so a level costs about
      * as much as a few hundred sweeps of a tile), at least {@link #MIN_ITERATIONS} and at most
      * {@link #MAX_ITERATIONS}. Small voids converge to round-off; on a tile's worth of voids the coarse
-     * grids have already given the shape, and 5000 iterations instead of 100 changed the summit figures
+     * grids have already given the shape, and 5000 iterations instead of 60 changed the summit figures
      * of docs/void-fill.md by under 1 m while taking seconds more.
      */
-    private static final long ITERATION_BUDGET = 2_000_000;
-    private static final int MIN_ITERATIONS = 100, MAX_ITERATIONS = 3000;
+    private static final long ITERATION_BUDGET = 1_000_000;
+    private static final int MIN_ITERATIONS = 60, MAX_ITERATIONS = 3000;
 
     private SplineVoidFill() {
     }

@@ -26,8 +26,10 @@ public enum VoidFill {
      * Thin-plate fill with slight tension: minimises the squared Laplacian (bending) of the surface
      * plus {@link SplineVoidFill#THIN_PLATE_TENSION} times its squared slope, so the slopes around a
      * void are carried on into it: a summit the rim rises towards is rebuilt as a dome above the rim.
-     * Planes are restored exactly in voids away from the tile border. The default (best on surveyed
-     * summits in voids, see docs/void-fill.md).
+     * Planes are restored exactly in voids away from the tile border. A void touching the tile border
+     * (valid samples on one side only, where bending would extrapolate without bound) gets the
+     * {@link #LAPLACE} fill instead. The default (best on surveyed summits in voids, see
+     * docs/void-fill.md).
      */
     THIN_PLATE;
 

@@ -52,9 +52,50 @@ final class VoidFiller {
         switch (method) {
             case IDW -> idw(h, n);
             case LAPLACE -> SplineVoidFill.fill(h, n, 1, 0);
-            case THIN_PLATE -> SplineVoidFill.fill(h, n, SplineVoidFill.THIN_PLATE_TENSION, 1);
+            case THIN_PLATE -> thinPlate(h, n);
         }
         return report;
+    }
+
+    /**
+     * The thin-plate fill, except for voids touching the tile border: those have valid samples on one
+     * side only, and bending extrapolates their slopes out of the tile without bound (on N46E008 a void
+     * on the western edge rose to 5414 m, 1200 m above anything around it), so they get the Laplace fill,
+     * which never leaves the range of their rim, with the thin-plate fill's heights held fixed elsewhere.
+     */
+    private static void thinPlate(float[] h, int n) {
+        java.util.BitSet border = borderVoids(h, n);
+        SplineVoidFill.fill(h, n, SplineVoidFill.THIN_PLATE_TENSION, 1);
+        if (!border.isEmpty()) {
+            for (int i = border.nextSetBit(0); i >= 0; i = border.nextSetBit(i + 1)) {
+                h[i] = Float.NaN;
+            }
+            SplineVoidFill.fill(h, n, 1, 0);
+        }
+    }
+
+    /** The void samples 4-connected to a void on the grid's border. */
+    static java.util.BitSet borderVoids(float[] h, int n) {
+        java.util.BitSet seen = new java.util.BitSet(h.length);
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        for (int k = 0; k < n; k++) {
+            for (int i : new int[] {k, (n - 1) * n + k, k * n, k * n + n - 1}) {
+                if (Float.isNaN(h[i]) && !seen.get(i)) {
+                    seen.set(i);
+                    queue.add(i);
+                }
+            }
+        }
+        while (!queue.isEmpty()) {
+            int i = queue.poll(), r = i / n, c = i % n;
+            for (int j : new int[] {r > 0 ? i - n : -1, r < n - 1 ? i + n : -1, c > 0 ? i - 1 : -1, c < n - 1 ? i + 1 : -1}) {
+                if (j >= 0 && Float.isNaN(h[j]) && !seen.get(j)) {
+                    seen.set(j);
+                    queue.add(j);
+                }
+            }
+        }
+        return seen;
     }
 
     /** The inverse-distance fill, in place; the grid must hold at least one valid sample. */
