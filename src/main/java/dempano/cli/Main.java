@@ -109,6 +109,9 @@ public final class Main implements Callable<Integer> {
     Double snapToSummitMetres;
     @Option(names = "--clear-view-m", paramLabel = "R", description = "Raise the eye until no terrain within R metres rises above its horizontal (+0.5 m); the lift is reported.")
     Double clearViewMetres;
+    @Option(names = "--void-fill", paramLabel = "thin-plate|laplace|idw", defaultValue = "thin-plate",
+            description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the previous default). Compared on surveyed summits in docs/void-fill.md.")
+    String voidFill;
 
     public static void main(String[] args) {
         System.exit(run(args));
@@ -199,13 +202,14 @@ public final class Main implements Callable<Integer> {
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
+        dempano.dem.VoidFill fill = dempano.dem.VoidFill.parse(voidFill);
         List<DemDirectory> demSources = new java.util.ArrayList<>();
         for (Path d : dirs) {
-            DemDirectory one = new DemDirectory(d);
+            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill);
             one.warnings().forEach(w -> System.err.println("  warning: " + w));
             demSources.add(one);
         }
-        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources);
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources, fill);
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;
@@ -273,7 +277,8 @@ public final class Main implements Callable<Integer> {
             for (String w : p.metadata().warnings()) {
                 System.err.println("  warning: " + w);
             }
-            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null : p.summits(summitList);
+            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null
+                    : dempano.summits.SummitProjector.withDem(p.summits(summitList), dem);
             files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(pfm, sightings, labelOptions));
             set.commit();
             if (sightings != null) {

@@ -42,6 +42,7 @@ public final class DemDirectory implements DemSource {
     private final Map<TileId, Path> files;
     private final List<String> warnings;
     private final Map<TileId, Cached> cache;
+    private final VoidFill voidFill;
 
     /** A loaded tile and the file's state when it was read: a changed file is read again. */
     private record Cached(HgtTile tile, Object stamp) {
@@ -52,6 +53,15 @@ public final class DemDirectory implements DemSource {
     }
 
     public DemDirectory(Path directory, int cachedTiles) {
+        this(directory, cachedTiles, VoidFill.DEFAULT);
+    }
+
+    /**
+     * @param cachedTiles tiles kept in memory
+     * @param voidFill    how the voids of its tiles are filled (they are still marked as filled voids)
+     */
+    public DemDirectory(Path directory, int cachedTiles, VoidFill voidFill) {
+        this.voidFill = java.util.Objects.requireNonNull(voidFill);
         if (!Files.isDirectory(directory)) {
             throw new DemException("DEM directory " + directory + " does not exist or is not a directory");
         }
@@ -172,7 +182,7 @@ public final class DemDirectory implements DemSource {
         }
         // Outside the lock: reading takes a while.
         HgtTile tile = TileId.isGeoTiffFileName(file.getFileName().toString())
-                ? GeoTiffReader.read(file, this::geoTiffOf) : HgtReader.read(file);
+                ? GeoTiffReader.read(file, this::geoTiffOf, voidFill) : HgtReader.read(file, voidFill);
         synchronized (cache) {
             cache.put(id, new Cached(tile, stamp));
         }

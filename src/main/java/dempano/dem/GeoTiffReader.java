@@ -113,10 +113,15 @@ public final class GeoTiffReader {
      * @param neighbours the GeoTIFF holding a tile, or null if there is none
      */
     public static HgtTile read(Path file, java.util.function.Function<TileId, Path> neighbours) {
+        return read(file, neighbours, VoidFill.DEFAULT);
+    }
+
+    /** {@link #read(Path, java.util.function.Function)} with the given void fill. */
+    public static HgtTile read(Path file, java.util.function.Function<TileId, Path> neighbours, VoidFill fill) {
         TileId id = TileId.parseFileName(file.getFileName().toString());
         Grid g = readGrid(file);
         List<String> warnings = new ArrayList<>();
-        return toTile(stitch(g, id, neighbours, warnings), id, warnings);
+        return toTile(stitch(g, id, neighbours, warnings), id, warnings, fill);
     }
 
     /**
@@ -561,6 +566,11 @@ public final class GeoTiffReader {
 
     /** {@link #toTile(Grid, TileId)} with warnings found before (they come first in the tile's). */
     static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings) {
+        return toTile(g, id, earlierWarnings, VoidFill.DEFAULT);
+    }
+
+    /** {@link #toTile(Grid, TileId, List)} with the given void fill. */
+    static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings, VoidFill fill) {
         int ipd = intervalsPerDegree(Math.min(g.colSpacingDeg(), Math.abs(g.rowSpacingDeg())));
         double centreRow = g.rowOf(id.latSouthDeg() + 0.5), centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5));
         if (!(centreRow >= -1 && centreRow <= g.height() && centreCol >= -1 && centreCol <= g.width())) {
@@ -588,7 +598,7 @@ public final class GeoTiffReader {
             warnings.add(zeros);
         }
         BitSet mask = VoidFiller.voidMask(h);
-        VoidReport voids = VoidFiller.fill(h, n);
+        VoidReport voids = VoidFiller.fill(h, n, fill);
         String needles = Plausibility.needles(h, n, id, g.source());
         if (needles != null) {
             warnings.add(needles);

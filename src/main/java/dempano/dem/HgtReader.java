@@ -26,11 +26,20 @@ public final class HgtReader {
     }
 
     /**
-     * Reads and void-fills a tile.
+     * Reads and void-fills a tile with the default fill ({@link VoidFill#DEFAULT}).
      *
      * @throws DemException naming the file and the problem (bad name, size, zip content, heights, I/O)
      */
     public static HgtTile read(Path file) {
+        return read(file, VoidFill.DEFAULT);
+    }
+
+    /**
+     * Reads a tile and fills its voids with the given method.
+     *
+     * @throws DemException naming the file and the problem (bad name, size, zip content, heights, I/O)
+     */
+    public static HgtTile read(Path file, VoidFill fill) {
         String fileName = file.getFileName().toString();
         TileId id = TileId.parseFileName(fileName);
         byte[] bytes;
@@ -43,7 +52,7 @@ public final class HgtReader {
         } catch (IOException e) {
             throw new DemException(file + ": cannot read (" + e + ")", e);
         }
-        return decode(id, file.toString(), bytes);
+        return decode(id, file.toString(), bytes, fill);
     }
 
     /**
@@ -52,6 +61,11 @@ public final class HgtReader {
      * {@link HgtTile#warnings()}.
      */
     public static HgtTile decode(TileId id, String source, byte[] bytes) {
+        return decode(id, source, bytes, VoidFill.DEFAULT);
+    }
+
+    /** {@link #decode(TileId, String, byte[])} with the given void fill. */
+    public static HgtTile decode(TileId id, String source, byte[] bytes, VoidFill fill) {
         int n = samplesForLength(source, bytes.length);
         float[] heights = new float[n * n];
         ByteBuffer buf = ByteBuffer.wrap(bytes).order(ByteOrder.BIG_ENDIAN);
@@ -72,7 +86,7 @@ public final class HgtReader {
             warnings.add(zeros);
         }
         java.util.BitSet mask = VoidFiller.voidMask(heights);
-        VoidReport voids = VoidFiller.fill(heights, n);
+        VoidReport voids = VoidFiller.fill(heights, n, fill);
         String needles = Plausibility.needles(heights, n, id, source);
         if (needles != null) {
             warnings.add(needles);

@@ -30,6 +30,7 @@ public final class PriorityDem implements DemSource {
 
     private final List<DemSource> sources;
     private final Map<TileId, Merge> cache;
+    private final VoidFill voidFill;
 
     private record Merge(List<HgtTile> inputs, HgtTile merged) {
     }
@@ -39,6 +40,16 @@ public final class PriorityDem implements DemSource {
      * @throws IllegalArgumentException if there is none
      */
     public PriorityDem(List<? extends DemSource> sources) {
+        this(sources, VoidFill.DEFAULT);
+    }
+
+    /**
+     * @param sources  in priority order, at least one
+     * @param voidFill how the voids no source fills are interpolated
+     * @throws IllegalArgumentException if there is no source
+     */
+    public PriorityDem(List<? extends DemSource> sources, VoidFill voidFill) {
+        this.voidFill = java.util.Objects.requireNonNull(voidFill);
         if (sources.isEmpty()) {
             throw new IllegalArgumentException("no DEM source given");
         }
@@ -53,7 +64,12 @@ public final class PriorityDem implements DemSource {
 
     /** One source if there is only one, else a {@link PriorityDem} of them. */
     public static DemSource of(List<? extends DemSource> sources) {
-        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources);
+        return of(sources, VoidFill.DEFAULT);
+    }
+
+    /** One source if there is only one, else a {@link PriorityDem} of them filling with {@code voidFill}. */
+    public static DemSource of(List<? extends DemSource> sources, VoidFill voidFill) {
+        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources, voidFill);
     }
 
     public List<DemSource> sources() {
@@ -86,7 +102,7 @@ public final class PriorityDem implements DemSource {
                 return Optional.of(m.merged());
             }
         }
-        HgtTile merged = merge(first, found.subList(primary + 1, found.size()));
+        HgtTile merged = merge(first, found.subList(primary + 1, found.size()), voidFill);
         synchronized (cache) {
             cache.put(id, new Merge(found, merged));
         }
@@ -104,6 +120,11 @@ public final class PriorityDem implements DemSource {
 
     /** The primary's valid samples, its voids filled from the fillers in order, the rest interpolated. */
     static HgtTile merge(HgtTile primary, List<HgtTile> fillers) {
+        return merge(primary, fillers, VoidFill.DEFAULT);
+    }
+
+    /** {@link #merge(HgtTile, List)} interpolating the remaining voids with {@code voidFill}. */
+    static HgtTile merge(HgtTile primary, List<HgtTile> fillers, VoidFill voidFill) {
         int n = primary.samplesPerSide();
         float[] h = new float[n * n];
         BitSet open = new BitSet(n * n);
@@ -142,7 +163,7 @@ public final class PriorityDem implements DemSource {
             }
         }
         BitSet mask = VoidFiller.voidMask(h);
-        VoidReport voids = VoidFiller.fill(h, n);
+        VoidReport voids = VoidFiller.fill(h, n, voidFill);
         return new HgtTile(primary.id(), source.toString(), n, h, voids, mask, warnings)
                 .withVerticalDatum(primary.verticalDatum()).withContributions(contributions);
     }

@@ -3,10 +3,12 @@ package dempano.dem;
 import java.util.ArrayDeque;
 
 /**
- * Fills voids (NaN) by inverse-distance weighting of the nearest valid sample in each of eight
- * directions (as GDAL's FillNodata searches), so that every void, however large, gets a height
- * interpolated from the valid samples around it. Runs in O(8·n²) with directional sweeps. A tile
- * without any valid sample is set to 0 m (sea level) and reported as entirely void.
+ * Fills voids (NaN) with one of the {@link VoidFill} methods and reports them. The inverse-distance
+ * fill ({@link VoidFill#IDW}) weights the nearest valid sample in each of eight directions (as GDAL's
+ * FillNodata searches), so that every void, however large, gets a height interpolated from the valid
+ * samples around it, in O(8·n²) with directional sweeps; it also starts the spline fills
+ * ({@link SplineVoidFill}) on their coarsest grid. A tile without any valid sample is set to 0 m (sea
+ * level) and reported as entirely void.
  */
 final class VoidFiller {
     private static final int[][] DIRECTIONS = {
@@ -26,8 +28,13 @@ final class VoidFiller {
         return mask;
     }
 
-    /** Fills NaN samples of a square grid in place and reports them. */
+    /** Fills NaN samples of a square grid in place with the default fill and reports them. */
     static VoidReport fill(float[] h, int n) {
+        return fill(h, n, VoidFill.DEFAULT);
+    }
+
+    /** Fills NaN samples of a square grid in place and reports them. */
+    static VoidReport fill(float[] h, int n, VoidFill method) {
         int voids = 0;
         for (float v : h) {
             if (Float.isNaN(v)) {
@@ -42,12 +49,62 @@ final class VoidFiller {
             java.util.Arrays.fill(h, 0f);
             return report;
         }
+        switch (method) {
+            case IDW -> idw(h, n);
+            case LAPLACE -> SplineVoidFill.fill(h, n, 1, 0);
+            case THIN_PLATE -> thinPlate(h, n);
+        }
+        return report;
+    }
+
+    /**
+     * The thin-plate fill, except for voids touching the tile border: those have valid samples on one
+     * side only, and bending extrapolates their slopes out of the tile without bound (on N46E008 a void
+     * on the western edge rose to 5414 m, 1200 m above anything around it), so they get the Laplace fill,
+     * which never leaves the range of their rim, with the thin-plate fill's heights held fixed elsewhere.
+     */
+    private static void thinPlate(float[] h, int n) {
+        java.util.BitSet border = borderVoids(h, n);
+        SplineVoidFill.fill(h, n, SplineVoidFill.THIN_PLATE_TENSION, 1);
+        if (!border.isEmpty()) {
+            for (int i = border.nextSetBit(0); i >= 0; i = border.nextSetBit(i + 1)) {
+                h[i] = Float.NaN;
+            }
+            SplineVoidFill.fill(h, n, 1, 0);
+        }
+    }
+
+    /** The void samples 4-connected to a void on the grid's border. */
+    static java.util.BitSet borderVoids(float[] h, int n) {
+        java.util.BitSet seen = new java.util.BitSet(h.length);
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        for (int k = 0; k < n; k++) {
+            for (int i : new int[] {k, (n - 1) * n + k, k * n, k * n + n - 1}) {
+                if (Float.isNaN(h[i]) && !seen.get(i)) {
+                    seen.set(i);
+                    queue.add(i);
+                }
+            }
+        }
+        while (!queue.isEmpty()) {
+            int i = queue.poll(), r = i / n, c = i % n;
+            for (int j : new int[] {r > 0 ? i - n : -1, r < n - 1 ? i + n : -1, c > 0 ? i - 1 : -1, c < n - 1 ? i + 1 : -1}) {
+                if (j >= 0 && Float.isNaN(h[j]) && !seen.get(j)) {
+                    seen.set(j);
+                    queue.add(j);
+                }
+            }
+        }
+        return seen;
+    }
+
+    /** The inverse-distance fill, in place; the grid must hold at least one valid sample. */
+    static void idw(float[] h, int n) {
         // A void that sees no valid sample along any of the eight lines (possible when the valid
         // samples are few and off-axis) is filled by a later pass from the samples filled before it.
         while (fillPass(h, n) > 0) {
             // repeat
         }
-        return report;
     }
 
     /** One directional IDW pass; returns how many voids remain. */

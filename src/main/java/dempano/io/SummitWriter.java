@@ -108,11 +108,15 @@ public final class SummitWriter {
             number(o, "mapDistanceMetres", s.mapDistanceMetres());
             number(o, "seenDistanceMetres", s.seenDistanceMetres());
             o.addProperty("visible", s.visible());
+            number(o, "demHeightMetres", s.demHeightMetres());
+            o.addProperty("inFilledVoid", s.inFilledVoid());
             a.add(o);
         }
         JsonObject root = new JsonObject();
         root.addProperty("note", "mapDistanceMetres: distance-map value at the summit's pixel (null: sky or outside);"
-                + " seenDistanceMetres: terrain seen at the summit within the tolerance window (null: none)");
+                + " seenDistanceMetres: terrain seen at the summit within the tolerance window (null: none);"
+                + " demHeightMetres: the DEM's height at the summit's position (null: not looked up);"
+                + " inFilledVoid: the DEM had a void there, its height is interpolated");
         root.add("summits", a);
         return new GsonBuilder().setPrettyPrinting().create().toJson(root) + "\n";
     }
@@ -127,16 +131,17 @@ public final class SummitWriter {
 
     static String csv(List<SummitSighting> sightings) {
         StringBuilder b = new StringBuilder("name,lat,lon,elevation_m,azimuth_deg,elevation_angle_deg,pixel_x,pixel_y,"
-                + "slant_m,ground_m,map_distance_m,seen_distance_m,visible\n");
+                + "slant_m,ground_m,map_distance_m,seen_distance_m,visible,dem_height_m,in_filled_void\n");
         for (SummitSighting s : sightings) {
             String name = s.summit().name();
             if (name.contains(",") || name.contains("\"")) {
                 name = "\"" + name.replace("\"", "\"\"") + "\"";
             }
-            b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s%n", name,
+            b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s,%s,%s%n", name,
                     s.summit().latDeg(), s.summit().lonDeg(), s.summit().elevationMetres(), s.azimuthDeg(),
                     s.elevationAngleDeg(), s.pixelX(), s.pixelY(), s.slantMetres(), s.groundMetres(),
-                    csvNumber(s.mapDistanceMetres()), csvNumber(s.seenDistanceMetres()), s.visible()));
+                    csvNumber(s.mapDistanceMetres()), csvNumber(s.seenDistanceMetres()), s.visible(),
+                    csvNumber(s.demHeightMetres()), s.inFilledVoid()));
         }
         return b.toString();
     }

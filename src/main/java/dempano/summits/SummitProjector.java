@@ -107,4 +107,36 @@ public final class SummitProjector {
         }
         return out;
     }
+
+    /**
+     * The sightings with the DEM's height at each summit and whether it lies in a filled void
+     * ({@link SummitSighting#demHeightMetres()}, {@link SummitSighting#inFilledVoid()}), looked up in
+     * {@code dem} at the summit's surveyed position. A summit on a tile the DEM does not have gets NaN
+     * and {@code false}.
+     *
+     * @throws dempano.dem.DemException if a tile exists but cannot be read
+     */
+    public static List<SummitSighting> withDem(List<SummitSighting> sightings, dempano.dem.DemSource dem) {
+        List<SummitSighting> out = new ArrayList<>(sightings.size());
+        java.util.Map<dempano.dem.TileId, java.util.Optional<dempano.dem.HgtTile>> tiles = new java.util.HashMap<>();
+        for (SummitSighting s : sightings) {
+            double lat = s.summit().latDeg(), lon = s.summit().lonDeg();
+            dempano.dem.TileId id = dempano.dem.TileId.containing(lat, lon);
+            java.util.Optional<dempano.dem.HgtTile> tile = tiles.computeIfAbsent(id, dem::tile);
+            out.add(tile.filter(t -> !t.entirelyVoid())
+                    .map(t -> s.withDem(t.heightAt(lat, lon), inFilledVoid(t, lat, lon)))
+                    .orElse(s));
+        }
+        return out;
+    }
+
+    /** True if one of the four samples around a position (those bilinear interpolation uses) is a filled void. */
+    static boolean inFilledVoid(dempano.dem.HgtTile t, double latDeg, double lonDeg) {
+        int n = t.samplesPerSide();
+        double row = (t.id().latSouthDeg() + 1 - latDeg) * t.intervalsPerDegree();
+        double col = (lonDeg - t.id().lonWestDeg()) * t.intervalsPerDegree();
+        int r = Math.max(0, Math.min(n - 2, (int) Math.floor(row)));
+        int c = Math.max(0, Math.min(n - 2, (int) Math.floor(col)));
+        return t.isFilledVoid(r, c) || t.isFilledVoid(r, c + 1) || t.isFilledVoid(r + 1, c) || t.isFilledVoid(r + 1, c + 1);
+    }
 }

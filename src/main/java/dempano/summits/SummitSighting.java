@@ -15,8 +15,29 @@ package dempano.summits;
  *                           below the summit's pixel, in the best-matching column of the tolerance
  *                           window (what a person clicking on the peak reads); NaN if none
  * @param visible            true when that terrain is the summit (within the documented tolerance)
+ * @param demHeightMetres    the DEM's height at the summit's surveyed position (bilinear between the
+ *                           four samples around it), metres; NaN when not looked up (no DEM given, or no
+ *                           tile there). Compare with {@code summit().elevationMetres()}: SRTM3 comes out
+ *                           some 40 m low on valid data (it averages 90 m cells), far more where it was void
+ * @param inFilledVoid       true when one of those four samples was a void the DEM had no height for,
+ *                           interpolated by the void fill: there the terrain, not the renderer, is what
+ *                           is most likely wrong
  */
 public record SummitSighting(Summit summit, double azimuthDeg, double elevationAngleDeg, double pixelX, double pixelY,
                              double slantMetres, double groundMetres, double mapDistanceMetres,
-                             double seenDistanceMetres, boolean visible) {
+                             double seenDistanceMetres, boolean visible, double demHeightMetres,
+                             boolean inFilledVoid) {
+    /** A sighting whose DEM height was not looked up (NaN, not in a void). */
+    public SummitSighting(Summit summit, double azimuthDeg, double elevationAngleDeg, double pixelX, double pixelY,
+                          double slantMetres, double groundMetres, double mapDistanceMetres, double seenDistanceMetres,
+                          boolean visible) {
+        this(summit, azimuthDeg, elevationAngleDeg, pixelX, pixelY, slantMetres, groundMetres, mapDistanceMetres,
+                seenDistanceMetres, visible, Double.NaN, false);
+    }
+
+    /** This sighting with the DEM's height at the summit and whether it lies in a filled void. */
+    public SummitSighting withDem(double heightMetres, boolean filledVoid) {
+        return new SummitSighting(summit, azimuthDeg, elevationAngleDeg, pixelX, pixelY, slantMetres, groundMetres,
+                mapDistanceMetres, seenDistanceMetres, visible, heightMetres, filledVoid);
+    }
 }

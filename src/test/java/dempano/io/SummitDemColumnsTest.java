@@ -1,0 +1,40 @@
+package dempano.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import dempano.summits.Summit;
+import dempano.summits.SummitSighting;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The summit files carry the DEM's height at each summit and whether it lies in a filled void. */
+class SummitDemColumnsTest {
+    private static final List<SummitSighting> SIGHTINGS = List.of(
+            new SummitSighting(new Summit("Schreckhorn", 46.59, 8.118, 4078), 250, 3, 10, 20, 30000, 29990, 30000, 30000,
+                    true).withDem(3601.5, true),
+            new SummitSighting(new Summit("Eggishorn", 46.43, 8.09, 2927), 200, 1, 30, 40, 40000, 39990, 40000, 40000,
+                    false));
+
+    @Test
+    void csvHasTheDemHeightAndTheVoidFlag() {
+        String[] lines = SummitWriter.csv(SIGHTINGS).split("\n");
+        assertTrue(lines[0].endsWith(",visible,dem_height_m,in_filled_void"), lines[0]);
+        assertTrue(lines[1].endsWith(",true,3601.5,true"), lines[1]);
+        assertTrue(lines[2].endsWith(",false,,false"), lines[2]);
+    }
+
+    @Test
+    void jsonHasTheDemHeightAndTheVoidFlag() {
+        JsonObject root = JsonParser.parseString(SummitWriter.json(SIGHTINGS)).getAsJsonObject();
+        JsonObject first = root.getAsJsonArray("summits").get(0).getAsJsonObject();
+        assertEquals(3601.5, first.get("demHeightMetres").getAsDouble());
+        assertTrue(first.get("inFilledVoid").getAsBoolean());
+        JsonObject second = root.getAsJsonArray("summits").get(1).getAsJsonObject();
+        // Not looked up: left out (as the writer leaves out every value JSON cannot hold).
+        assertTrue(second.get("demHeightMetres") == null || second.get("demHeightMetres").isJsonNull());
+        assertEquals(false, second.get("inFilledVoid").getAsBoolean());
+    }
+}
