@@ -17,14 +17,18 @@ import java.util.Locale;
  * (bisection, 7 % steps): demo scene at 10, 30 and 50 px/° needed 133, 508 and 1268 MB, estimated
  * 165, 610 and 1483 MB; Mount Washington at 20 px/°, 100 km, needed 234 MB, estimated 333 MB. So a
  * request the estimate accepts runs, and one it refuses would need at least about 85 % of the
- * estimate. Direct buffers (one view's read-back, the terrain mesh) count against their own limit.
+ * estimate. Exact per-pixel distances hold per view pixel also the surface ids read back (8) and
+ * then the triangle seen (4), and 72 bytes per distinct triangle seen, counted as one per 16 view
+ * pixels (measured: one per 57 at Mount Washington, 191 k triangles for 10.9 M view pixels): 25 bytes
+ * per view pixel in all while stitching. Direct buffers (one view's read-back, the terrain mesh) count against their own limit.
  *
  * @param viewPixels     pixels of all views together (0 for the CPU reference)
  * @param panoramaPixels pixels of the panorama before any automatic crop
  * @param layers         extra per-pixel layers requested
  * @param tileBytes      bytes of the tiles the range needs
+ * @param exactDistances whether the views also carry what each sample saw (exact per-pixel distances)
  */
-public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, long tileBytes) {
+public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, long tileBytes, boolean exactDistances) {
     /** JVM, jME, shaders, terrain mesh and caches, bytes (measured; see the class comment). */
     static final long BASE_BYTES = 100L << 20;
     /** Heap the collector needs beyond the live data to keep going (measured; see the class comment). */
@@ -39,12 +43,13 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
             ViewLayout layout = ViewLayout.forPanorama(g, req.views(), req.supersampling());
             views = (long) req.views() * layout.widthPx() * layout.heightPx();
         }
-        return new MemoryEstimate(views, (long) g.widthPx() * g.heightPx(), req.layers().size(), tileBytes);
+        return new MemoryEstimate(views, (long) g.widthPx() * g.heightPx(), req.layers().size(), tileBytes,
+                withViews && req.exactDistances() && req.distance());
     }
 
     /** Bytes held while the views are stitched. */
     public long stitchingBytes() {
-        return 12 * viewPixels + 8 * panoramaPixels;
+        return (exactDistances ? 25 : 12) * viewPixels + 8 * panoramaPixels;
     }
 
     /** Bytes held while the files are written. */

@@ -152,7 +152,7 @@ class ExactDistanceTest {
         int latS = (int) Math.floor(lat), lonW = (int) Math.floor(lon);
         InMemoryDem dem = Synthetic.tiles(f, 601, Synthetic.block(latS, lonW, 1, 1));
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withEyeHeightMetres(eyeMetres).withRangeMetres(30_000)
-                .withRefraction(Refraction.NONE).withElevationRange(elevations).withExactDistances(true);
+                .withRefraction(Refraction.NONE).withElevationRange(elevations);
         Panorama gl, ref;
         try (PanoramaRenderer r = PanoramaRenderer.open(dem); PanoramaRenderer cpu = PanoramaRenderer.openReference(dem)) {
             gl = r.render(req);
@@ -165,9 +165,9 @@ class ExactDistanceTest {
         System.out.println(report);
         assertTrue(c.shareOver5Percent() < 5e-4, report);
         assertTrue(c.p99Relative() < 1e-3, report);
-        // Measured 0.2 % (ramp), 5.2 % (knife-edge ridge), 0 (lake), 6.6 % (70° N); goal 5 %: the terrain probe
-        // steps outward by 10 % of the distance and can step over a crest thinner than that.
-        assertTrue(c.skylineColumnsOff() < 0.08, report);
+        // Measured 0.14 % (ramp), 2.3 % (knife-edge ridge), 0 (lake), 0.76 % (70° N); the goal is 5 %. Beside the
+        // sky the terrain probe steps a DEM cell at a time; a crest the ray crosses over less than that can be missed.
+        assertTrue(c.skylineColumnsOff() < 0.04, report);
         for (var bin : bins) {
             if (bin.pixels() > 0) {
                 assertTrue(bin.medianRelative() < 1e-4, report);
