@@ -110,21 +110,23 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
             throw new IllegalArgumentException("supersampling must be in [0.25, 8], got " + supersampling);
         }
         int w = t.widthPx(), h = t.heightPx();
-        // A grid over the image, its edges included: rays, and the angular size of the pixels there.
-        int n = 48;
+        // A grid over the image, its edges included, about a pixel apart on small images and at most 1/256 of the
+        // image on large ones (a lens model's domain can end inside the image: its edge rays are the widest):
+        // rays, and the angular size of the pixels there.
+        int nx = Math.min(w, 256), ny = Math.min(h, 256);
         java.util.List<double[]> rays = new java.util.ArrayList<>();
         double finestRad = Double.POSITIVE_INFINITY;
         double[] r0 = new double[3], r1 = new double[3];
-        for (int i = 0; i <= n; i++) {
-            for (int j = 0; j <= n; j++) {
-                double px = -0.5 + (double) w * i / n, py = -0.5 + (double) h * j / n;
+        for (int i = 0; i <= nx; i++) {
+            for (int j = 0; j <= ny; j++) {
+                double px = -0.5 + (double) w * i / nx, py = -0.5 + (double) h * j / ny;
                 double[] r = t.rayOf(px, py);
                 if (Double.isNaN(r[0])) {
                     continue;
                 }
                 rays.add(r);
-                t.rayOf(px + (i < n ? 1 : -1), py, r0);
-                t.rayOf(px, py + (j < n ? 1 : -1), r1);
+                t.rayOf(px + (i < nx ? 1 : -1), py, r0);
+                t.rayOf(px, py + (j < ny ? 1 : -1), r1);
                 for (double[] q : new double[][] {r0, r1}) {
                     if (!Double.isNaN(q[0])) {
                         finestRad = Math.min(finestRad, angleRad(r, q));
