@@ -97,9 +97,10 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
     /**
      * The views that cover a target image's rays: one view around its centre's ray when every ray lies within
      * {@link #MAX_SINGLE_VIEW_OFF_AXIS_DEG} of it, else views side by side, turned about the image's up
-     * direction, at most 80° apart. Resolution: a view pixel at the axis is at most {@code 1/supersampling} of the
-     * target's finest pixel (measured on a grid over the image), so every target pixel is sampled at least as
-     * finely as it is wide; {@link #CAMERA_MARGIN_PX} view pixels of margin on every side.
+     * direction, at most 80° apart. Resolution: wherever the target has a ray, a view pixel spans at most
+     * {@code 1/supersampling} of the target's pixel there (both measured on a grid over the image; a view pixel
+     * off the axis spans a smaller angle than at it), so every target pixel is sampled at least as finely as it
+     * is wide; {@link #CAMERA_MARGIN_PX} view pixels of margin on every side.
      *
      * @throws IllegalArgumentException when the target's rays are too wide for perspective views (more than
      *                                  {@link #MAX_CAMERA_TILT_DEG} above or below the views' plane, or a
@@ -110,10 +111,10 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
             throw new IllegalArgumentException("supersampling must be in [0.25, 8], got " + supersampling);
         }
         int w = t.widthPx(), h = t.heightPx();
-        // A grid over the image, its edges included, about a pixel apart on small images and at most 1/256 of the
-        // image on large ones (a lens model's domain can end inside the image: its edge rays are the widest):
+        // A grid over the image, its edges included, half a pixel apart (edges and centres) on images up to 512
+        // pixels and 1/1024 of the image on larger ones (a lens model's domain can end inside the image: its edge rays are the widest):
         // rays, and the angular size of the pixels there.
-        int nx = Math.min(w, 256), ny = Math.min(h, 256);
+        int nx = Math.min(2 * w, 1024), ny = Math.min(2 * h, 1024);
         java.util.List<double[]> rays = new java.util.ArrayList<>();
         double finestRad = Double.POSITIVE_INFINITY;
         double[] r0 = new double[3], r1 = new double[3];
@@ -124,14 +125,16 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
                 if (Double.isNaN(r[0])) {
                     continue;
                 }
-                rays.add(r);
                 t.rayOf(px + (i < nx ? 1 : -1), py, r0);
                 t.rayOf(px, py + (j < ny ? 1 : -1), r1);
+                double pixelRad = Double.POSITIVE_INFINITY;
                 for (double[] q : new double[][] {r0, r1}) {
                     if (!Double.isNaN(q[0])) {
-                        finestRad = Math.min(finestRad, angleRad(r, q));
+                        pixelRad = Math.min(pixelRad, angleRad(r, q));
                     }
                 }
+                finestRad = Math.min(finestRad, pixelRad);
+                rays.add(new double[] {r[0], r[1], r[2], pixelRad}); // the ray, and its pixel's angular size
             }
         }
         double[] centre = t.rayOf((w - 1) / 2.0, (h - 1) / 2.0);
@@ -182,16 +185,28 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
             }
             axes[k] = a;
         }
-        double xMax = 0, yMin = Double.POSITIVE_INFINITY, yMax = Double.NEGATIVE_INFINITY;
+        double xMax = 0, yMin = Double.POSITIVE_INFINITY, yMax = Double.NEGATIVE_INFINITY, tanStep = Double.POSITIVE_INFINITY;
         for (double[] r : rays) {
             double[] a = axes[nearestView(axes, r[0], r[1], r[2])];
             double z = a[6] * r[0] + a[7] * r[1] + a[8] * r[2];
             double x = (a[0] * r[0] + a[1] * r[1] + a[2] * r[2]) / z, y = (a[3] * r[0] + a[4] * r[1] + a[5] * r[2]) / z;
+            // A view step of δ (tangent units) at (x, y) spans δ·√(1 + y²)/(1 + x² + y²) rad across x and
+            // δ·√(1 + x²)/(1 + x² + y²) rad across y: δ is chosen so the smaller is at most the target's pixel.
+            double shrink = Math.min(Math.sqrt(1 + y * y), Math.sqrt(1 + x * x)) / (1 + x * x + y * y);
+            tanStep = Math.min(tanStep, r[3] / shrink);
+            if (views > 1) {
+                // Between grid samples a ray can lie on the border between two views, where y/z is largest: bound
+                // y by the ray's tilt seen at the sector's edge, and x by the sector's half width.
+                double tilt = Math.atan2(dotProduct(r, up), Math.hypot(dotProduct(r, right), dotProduct(r, fwd)));
+                y = Math.tan(tilt) / Math.cos(step / 2);
+                x = Math.tan(step / 2);
+            }
             xMax = Math.max(xMax, Math.abs(x));
             yMin = Math.min(yMin, y);
             yMax = Math.max(yMax, y);
         }
-        double perPixel = finestRad / supersampling;
+        // 1 % finer than the finest pixel sampled: the grid can miss the finest spot by a fraction of a pixel.
+        double perPixel = tanStep / supersampling / 1.01;
         double half = xMax + CAMERA_MARGIN_PX * perPixel;
         int vw = (int) Math.ceil(2 * half / perPixel);
         perPixel = 2 * half / vw;
