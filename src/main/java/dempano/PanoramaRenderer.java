@@ -16,6 +16,9 @@ import dempano.panorama.Silhouettes;
 import dempano.panorama.Stitcher;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
+import dempano.camera.CameraView;
+import dempano.camera.PanoramaTarget;
+import dempano.camera.TargetImage;
 import dempano.render.OffscreenRenderer;
 import dempano.panorama.SeenTriangles;
 import dempano.reference.TerrainRayProbe;
@@ -107,29 +110,19 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws dempano.render.RenderFailedException when the GL thread fails (the renderer is then closed)
      */
     public Panorama render(PanoramaRequest req, Consumer<String> progress) {
-        Map<String, Double> timings = new LinkedHashMap<>();
-        long t = System.nanoTime();
+        Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
-        Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
-        req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
-        t = lap(timings, "tiles", t);
+        Mosaic mosaic = tiles(req, clock);
         long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
         MemoryEstimate.of(req, gl != null, Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
                 .check(Runtime.getRuntime().maxMemory());
-
         Viewpoint requested = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
-        ViewpointAdjustment.Adjusted adjusted = ViewpointAdjustment.apply(mosaic, requested, req.snapToSummitMetres(),
-                req.clearViewMetres(), req.refraction());
-        Viewpoint eye = adjusted.eye();
+        Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, requested, req.snapToSummitMetres(),
+                req.clearViewMetres(), req.refraction()));
         if (gl == null) {
-            return renderReference(req, mosaic, adjusted, timings, t, progress);
-        }
-        progress.accept("building terrain mesh");
-        Material material = gl.newTerrainMaterial(req.rangeMetres());
-        if (!req.colour()) {
-            material.setBoolean("DistanceOnly", true);
+            return renderReference(req, scene, clock, progress);
         }
         ElevationRange er = req.elevationRange();
         // Terrain wholly below the lowest view row the stitcher samples (the bottom row's 4×4
@@ -137,6 +130,105 @@ public final class PanoramaRenderer implements AutoCloseable {
         double cullBelowDeg = er.bottomDeg() - 3 / req.pixelsPerDegree();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
+        Drawn drawn = draw(req, scene, layout, req.pixelsPerDegree(), cullBelowDeg, clock, progress);
+        Images images = stitch(req, scene, new PanoramaTarget(geometry), layout, drawn, clock, progress);
+        return finish(req, scene, geometry, images, drawing(req, layout, drawn), clock, progress);
+    }
+
+    /**
+     * Renders a camera's own view on its pixel grid through the panorama's pipeline: the views that cover the
+     * camera's rays ({@link ViewLayout#forTarget}), drawn and resampled as a panorama's are, with exact
+     * per-pixel distances when the settings ask for them. The silhouettes are drawn into the colour.
+     *
+     * @throws IllegalStateException    on the CPU reference renderer (it sweeps panorama columns only)
+     * @throws IllegalArgumentException for a viewpoint without DEM data or a field of view too wide for
+     *                                  perspective views
+     */
+    public CameraImage render(CameraRequest request, Consumer<String> progress) {
+        if (gl == null) {
+            throw new IllegalStateException("the CPU reference renders panoramas only: a camera view needs OpenGL");
+        }
+        PanoramaRequest req = request.settings();
+        CameraView view = request.view();
+        ViewLayout layout = ViewLayout.forTarget(view, req.supersampling());
+        Stopwatch clock = new Stopwatch();
+        progress.accept("loading tiles");
+        Mosaic mosaic = tiles(req, clock);
+        Viewpoint eye = request.pose().viewpoint(mosaic);
+        Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, eye, Double.NaN, Double.NaN, req.refraction()));
+        double viewPixelDeg = Math.toDegrees(2 * layout.halfWidthTan() / layout.widthPx());
+        // Terrain wholly below the views' lowest ray, less three view pixels (the 4×4 neighbourhoods), is left out.
+        double cullBelowDeg = layout.lowestElevationDeg() - 3 * viewPixelDeg;
+        Drawn drawn = draw(req, scene, layout, 1 / viewPixelDeg, cullBelowDeg, clock, progress);
+        Images images = stitch(req, scene, view, layout, drawn, clock, progress);
+        if (images.argb() != null) {
+            Silhouettes.draw(images.argb(), images.distance(), view.widthPx(), view.heightPx());
+        }
+        PanoramaMetadata meta = metadata(req, scene, drawing(req, layout, drawn), clock.timings,
+                new ArrayList<>(mosaic.warnings()));
+        return new CameraImage(view, request.pose(), images.argb(), req.distance() ? images.distance() : null, meta);
+    }
+
+    /** {@link #render(CameraRequest, Consumer)} without progress reports. */
+    public CameraImage render(CameraRequest request) {
+        return render(request, stage -> { });
+    }
+
+    /** The tiles around the request's coordinate, checked as its missing-tile policy says. */
+    private Mosaic tiles(PanoramaRequest req, Stopwatch clock) {
+        Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());
+        req.missingTiles().checkData(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres());
+        clock.lap("tiles");
+        return mosaic;
+    }
+
+    /**
+     * Where the eye is and the DEM around it.
+     *
+     * @param adjusted the eye as placed (after any viewpoint adjustment) and how it moved
+     */
+    private record Scene(Mosaic mosaic, ViewpointAdjustment.Adjusted adjusted) {
+        Viewpoint eye() {
+            return adjusted.eye();
+        }
+    }
+
+    /**
+     * The views as drawn.
+     *
+     * @param seen       the triangles seen per view sample (exact distances), else null
+     * @param nearMetres near plane used
+     * @param farMetres  far plane used
+     */
+    private record Drawn(ViewCapture[] captures, SeenTriangles seen, double nearMetres, double farMetres, long triangles) {
+    }
+
+    /** A target's pixels: colour (ARGB, null when not rendered) and distance (metres, +∞ sky), row-major. */
+    private record Images(int[] argb, float[] distance) {
+    }
+
+    /** Stage timings in milliseconds, in the order the stages ran, and the clock between them. */
+    private static final class Stopwatch {
+        final Map<String, Double> timings = new LinkedHashMap<>();
+        long since = System.nanoTime();
+
+        void lap(String stage) {
+            long now = System.nanoTime();
+            timings.put(stage, (now - since) / 1e6);
+            since = now;
+        }
+    }
+
+    /** Builds the terrain mesh for the eye and draws the views of a layout. */
+    private Drawn draw(PanoramaRequest req, Scene scene, ViewLayout layout, double pixelsPerDegree, double cullBelowDeg,
+                       Stopwatch clock, Consumer<String> progress) {
+        Viewpoint eye = scene.eye();
+        Mosaic mosaic = scene.mosaic();
+        progress.accept("building terrain mesh");
+        Material material = gl.newTerrainMaterial(req.rangeMetres());
+        if (!req.colour()) {
+            material.setBoolean("DistanceOnly", true);
+        }
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
@@ -149,10 +241,11 @@ public final class PanoramaRenderer implements AutoCloseable {
         boolean withMeshCache = meshLock.tryLock();
         try {
             TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
-                    req.pixelsPerDegree(), req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null, cullBelowDeg);
-            t = lap(timings, "mesh", t);
+                    new TerrainBuilder.Detail(pixelsPerDegree, req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null,
+                            cullBelowDeg));
+            clock.lap("mesh");
             triangles = terrain.triangles();
-            progress.accept("rendering " + req.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
+            progress.accept("rendering " + layout.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                     + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
             long[] drawAndRead = new long[2];
             long resolveNanos = 0;
@@ -179,55 +272,67 @@ public final class PanoramaRenderer implements AutoCloseable {
             }
             long afterRender = System.nanoTime();
             // "render" splits into drawing and reading back; what remains (scene upload, culling, release) is "upload".
-            timings.put("upload", (afterRender - t - drawAndRead[0] - drawAndRead[1] - resolveNanos) / 1e6);
-            timings.put("draw", drawAndRead[0] / 1e6);
-            timings.put("readback", drawAndRead[1] / 1e6);
+            clock.timings.put("upload", (afterRender - clock.since - drawAndRead[0] - drawAndRead[1] - resolveNanos) / 1e6);
+            clock.timings.put("draw", drawAndRead[0] / 1e6);
+            clock.timings.put("readback", drawAndRead[1] / 1e6);
             if (exact) {
-                timings.put("triangles", resolveNanos / 1e6);
+                clock.timings.put("triangles", resolveNanos / 1e6);
             }
-            t = afterRender;
+            clock.since = afterRender;
         } finally {
             if (withMeshCache) {
                 meshLock.unlock();
             }
         }
+        return new Drawn(captures, seen, near, far, triangles);
+    }
 
+    /** Resamples drawn views into a target image's pixels (colour, distance), exact distances where asked. */
+    private static Images stitch(PanoramaRequest req, Scene scene, TargetImage target, ViewLayout layout, Drawn drawn,
+                                 Stopwatch clock, Consumer<String> progress) {
         progress.accept("stitching");
-        int[] argb = req.colour() ? new int[geometry.widthPx() * geometry.heightPx()] : null;
-        float[] distance = new float[geometry.widthPx() * geometry.heightPx()];
+        ViewCapture[] captures = drawn.captures();
+        int pixels = target.widthPx() * target.heightPx();
+        int[] argb = req.colour() ? new int[pixels] : null;
+        float[] distance = new float[pixels];
+        boolean exact = drawn.seen() != null;
         if (req.distance()) {
             float[][] inverseEyeDepth = new float[captures.length][];
             for (int k = 0; k < captures.length; k++) {
-                inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), near, far);
+                inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), drawn.nearMetres(),
+                        drawn.farMetres());
             }
-            Stitcher.Result stitched = Stitcher.stitch(geometry, layout, captures, inverseEyeDepth,
-                    exact ? new Stitcher.Exact(seen, new TerrainRayProbe(mosaic, eye, req.refraction(), req.rangeMetres())) : null,
+            Stitcher.Result stitched = Stitcher.stitch(target, layout, captures, inverseEyeDepth,
+                    exact ? new Stitcher.Exact(drawn.seen(), new TerrainRayProbe(scene.mosaic(), scene.eye(), req.refraction(),
+                            req.rangeMetres())) : null,
                     argb, distance);
             if (exact) {
-                progress.accept("distances: " + stitched.exactPixels() + " pixels from the " + seen.triangles()
+                progress.accept("distances: " + stitched.exactPixels() + " pixels from the " + drawn.seen().triangles()
                         + " triangles seen, "
                         + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
             }
         } else {
-            Stitcher.stitchColour(geometry, layout, captures, argb, distance);
+            Stitcher.stitchColour(target, layout, captures, argb, distance);
         }
-        t = lap(timings, "stitch", t);
-        Drawing drawing = new Drawing(req.views(), layout.widthPx(), layout.heightPx(),
-                req.depthMode() == DepthMode.STANDARD_24 ? far : Double.POSITIVE_INFINITY, near, req.lodErrorPx(), triangles);
-        return finish(req, mosaic, adjusted, geometry, argb, distance, drawing, timings, t, progress);
+        clock.lap("stitch");
+        return new Images(argb, distance);
     }
 
-    private Panorama renderReference(PanoramaRequest req, Mosaic mosaic, ViewpointAdjustment.Adjusted adjusted,
-                                     Map<String, Double> timings, long t, Consumer<String> progress) {
-        Viewpoint eye = adjusted.eye();
+    private static Drawing drawing(PanoramaRequest req, ViewLayout layout, Drawn drawn) {
+        return new Drawing(layout.views(), layout.widthPx(), layout.heightPx(),
+                req.depthMode() == DepthMode.STANDARD_24 ? drawn.farMetres() : Double.POSITIVE_INFINITY, drawn.nearMetres(),
+                req.lodErrorPx(), drawn.triangles());
+    }
+
+    private Panorama renderReference(PanoramaRequest req, Scene scene, Stopwatch clock, Consumer<String> progress) {
         ElevationRange er = req.elevationRange();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         progress.accept("sweeping " + geometry.widthPx() + " columns on the CPU");
-        var result = dempano.reference.ReferenceRenderer.render(mosaic, eye, req.refraction(), req.rangeMetres(),
-                geometry, req.colour());
-        t = lap(timings, "render", t);
-        return finish(req, mosaic, adjusted, geometry, result.argb(), result.distanceMetres(),
-                new Drawing(req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), timings, t, progress);
+        var result = dempano.reference.ReferenceRenderer.render(scene.mosaic(), scene.eye(), req.refraction(),
+                req.rangeMetres(), geometry, req.colour());
+        clock.lap("render");
+        return finish(req, scene, geometry, new Images(result.argb(), result.distanceMetres()),
+                new Drawing(req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), clock, progress);
     }
 
     /**
@@ -239,10 +344,12 @@ public final class PanoramaRenderer implements AutoCloseable {
                            double lodErrorPx, long triangles) {
     }
 
-    private Panorama finish(PanoramaRequest req, Mosaic mosaic, ViewpointAdjustment.Adjusted adjusted,
-                            PanoramaGeometry geometry, int[] argb, float[] distance, Drawing drawing,
-                            Map<String, Double> timings, long t, Consumer<String> progress) {
-        Viewpoint eye = adjusted.eye();
+    private Panorama finish(PanoramaRequest req, Scene scene, PanoramaGeometry geometry, Images images, Drawing drawing,
+                            Stopwatch clock, Consumer<String> progress) {
+        Viewpoint eye = scene.eye();
+        Mosaic mosaic = scene.mosaic();
+        int[] argb = images.argb();
+        float[] distance = images.distance();
         if (argb != null) {
             Silhouettes.draw(argb, distance, geometry.widthPx(), geometry.heightPx());
         }
@@ -252,30 +359,37 @@ public final class PanoramaRenderer implements AutoCloseable {
             argb = argb == null ? null : AutoCrop.rows(argb, geometry.widthPx(), skip, cropped.heightPx());
             distance = AutoCrop.rows(distance, geometry.widthPx(), skip, cropped.heightPx());
             geometry = cropped;
-            t = lap(timings, "crop", t);
+            clock.lap("crop");
         }
         if (!req.layers().isEmpty()) {
             progress.accept("computing layers " + req.layers());
         }
         var layers = LayerComputer.compute(req.layers(), geometry, distance, eye.eyeFrame(), req.refraction(), mosaic);
         if (!req.layers().isEmpty()) {
-            lap(timings, "layers", t);
+            clock.lap("layers");
         }
-        List<String> used = new ArrayList<>(), missing = new ArrayList<>();
-        mosaic.tilesUsed().forEach(id -> used.add(id.name()));
-        mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
         List<String> warnings = new ArrayList<>(mosaic.warnings());
         if (req.distance()) {
             // A wall beside the eye (a viewpoint next to the DEM's own summit): say so, with the options that fix it.
             NearTerrain.measure(geometry, distance, NearTerrain.DEFAULT_NEAR_METRES).warning().ifPresent(warnings::add);
         }
-        PanoramaMetadata meta = new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
+        PanoramaMetadata meta = metadata(req, scene, drawing, clock.timings, warnings);
+        // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
+        return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
+    }
+
+    private PanoramaMetadata metadata(PanoramaRequest req, Scene scene, Drawing drawing, Map<String, Double> timings,
+                                      List<String> warnings) {
+        Viewpoint eye = scene.eye();
+        Mosaic mosaic = scene.mosaic();
+        List<String> used = new ArrayList<>(), missing = new ArrayList<>();
+        mosaic.tilesUsed().forEach(id -> used.add(id.name()));
+        mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
+        return new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
                 eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
                 req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), drawing.nearMetres(), drawing.farMetres(),
                 drawing.views(), drawing.viewWidthPx(), drawing.viewHeightPx(), used, missing, warnings, timings, glRenderer(),
-                drawing.lodErrorPx(), drawing.triangles(), adjusted.move(), demSources(mosaic));
-        // Colour only: the nearest-sample ranges served the silhouettes and the crop; they are no distance map.
-        return new Panorama(geometry, argb, req.distance() ? distance : null, layers, meta);
+                drawing.lodErrorPx(), drawing.triangles(), scene.adjusted().move(), demSources(mosaic));
     }
 
     /**
@@ -307,12 +421,6 @@ public final class PanoramaRenderer implements AutoCloseable {
         double cosOffAxis = 1 / Math.sqrt(1 + tanH * tanH + tanV * tanV);
         double bound = 0.9 * Math.max(0, clearance) * cosSlope * cosOffAxis;
         return Math.max(0.01, Math.min(requested, bound));
-    }
-
-    private static long lap(Map<String, Double> timings, String stage, long since) {
-        long now = System.nanoTime();
-        timings.put(stage, (now - since) / 1e6);
-        return now;
     }
 
     @Override

@@ -131,6 +131,7 @@ public final class Main implements Callable<Integer> {
     private static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new Main());
         cl.addSubcommand("fly", new FlyCommand());
+        cl.addSubcommand("photo", new PhotoCommand());
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());

@@ -1,5 +1,7 @@
 package dempano.panorama;
 
+import dempano.camera.PanoramaTarget;
+import dempano.camera.TargetImage;
 import java.util.stream.IntStream;
 
 /**
@@ -79,7 +81,17 @@ public final class Stitcher {
      */
     public static Result stitch(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                 Exact exact, int[] argbOut, float[] rangeOut) {
-        return resample(g, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), exact, argbOut, rangeOut);
+        return stitch(new PanoramaTarget(g), layout, captures, inverseEyeDepth, exact, argbOut, rangeOut);
+    }
+
+    /**
+     * As {@link #stitch(PanoramaGeometry, ViewLayout, ViewCapture[], float[][], Exact, int[], float[])} for any
+     * target image (a panorama or a camera): every pixel's ray is {@link TargetImage#rayOf} at its centre. A pixel
+     * without a ray gets black and a NaN distance.
+     */
+    public static Result stitch(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+                                Exact exact, int[] argbOut, float[] rangeOut) {
+        return resample(target, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), exact, argbOut, rangeOut);
     }
 
     /**
@@ -102,51 +114,43 @@ public final class Stitcher {
      */
     public static void stitchColour(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, int[] argbOut,
                                     float[] nearestRangeOut) {
-        resample(g, layout, captures, null, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
+        stitchColour(new PanoramaTarget(g), layout, captures, argbOut, nearestRangeOut);
+    }
+
+    /** As {@link #stitchColour(PanoramaGeometry, ViewLayout, ViewCapture[], int[], float[])} for any target image. */
+    public static void stitchColour(TargetImage target, ViewLayout layout, ViewCapture[] captures, int[] argbOut,
+                                    float[] nearestRangeOut) {
+        resample(target, layout, captures, null, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
     }
 
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
-    private static Result resample(PanoramaGeometry g, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+    private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                    Exact exact, int[] argbOut, float[] rangeOut) {
         SeenTriangles seen = exact == null ? null : exact.seen();
         RayProbe probe = exact == null ? null : exact.probe();
-        int width = g.widthPx();
-        // Per column: its view, x in the view, and the secant of its angle off the view's axis;
-        // a row's y in a view is then tan(elevation)·secant (see ViewLayout.project).
-        int[] viewOfCol = new int[width];
-        double[] pxOfCol = new double[width], xTanOfCol = new double[width], secOfCol = new double[width];
-        double[] sinAz = new double[width], cosAz = new double[width];
-        for (int col = 0; col < width; col++) {
-            double az = g.azimuthOfColumn(col);
-            sinAz[col] = Math.sin(Math.toRadians(az));
-            cosAz[col] = Math.cos(Math.toRadians(az));
-            viewOfCol[col] = layout.viewOf(az);
-            double[] q = layout.project(viewOfCol[col], az, 0);
-            pxOfCol[col] = q[0];
-            xTanOfCol[col] = q[2];
-            secOfCol[col] = Math.sqrt(1 + q[2] * q[2]);
-        }
-        double yScale = layout.heightPx() / (layout.topTan() - layout.bottomTan());
+        int width = target.widthPx();
+        ViewSampling sampling = ViewSampling.of(target, layout);
         int[][] topTerrainRow = seen == null ? null : topTerrainRows(seen.triangleOfSample(), layout);
         java.util.concurrent.atomic.LongAdder exactCount = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
-        IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
-            double elRad = Math.toRadians(g.elevationOfRow(row));
-            double tanEl = Math.tan(elRad), sinEl = Math.sin(elRad), cosEl = Math.cos(elRad);
+        IntStream.range(0, target.heightPx()).parallel().forEach(row -> {
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
             double[] p = new double[4];
+            double[] ray = new double[3];
             int[] candidates = new int[16];
             double[] hint = new double[3];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int col = 0; col < width; col++) {
-                int view = viewOfCol[col];
-                double yTan = tanEl * secOfCol[col];
-                p[0] = pxOfCol[col];
-                p[1] = (yTan - layout.bottomTan()) * yScale - 0.5;
-                p[2] = xTanOfCol[col];
-                p[3] = yTan;
+                int view = sampling.locate(col, row, p, ray);
                 int i = row * width + col;
+                if (view < 0) { // no ray: nothing to see
+                    if (argbOut != null) {
+                        argbOut[i] = 0xff000000;
+                    }
+                    rangeOut[i] = Float.NaN;
+                    continue;
+                }
                 if (argbOut != null) {
                     argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
                 }
@@ -157,9 +161,8 @@ public final class Stitcher {
                 double r = Double.NaN;
                 if (seen != null) {
                     // The pixel's own ray in the eye's frame (jME axes: east, up, south).
-                    double dx = cosEl * sinAz[col], dy = sinEl, dz = -cosEl * cosAz[col];
-                    int x0 = (int) Math.floor(p[0]);
-                    if (skyAround(topTerrainRow[view], x0, (int) Math.floor(p[1]))) {
+                    double dx = ray[0], dy = ray[1], dz = ray[2];
+                    if (skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]))) {
                         r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
                     } else {
                         r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);

@@ -471,12 +471,19 @@ public final class OffscreenRenderer {
                     ? ByteBuffer.allocateDirect(w * h * 16).order(ByteOrder.nativeOrder()).asFloatBuffer() : null;
             try {
                 for (int k = 0; k < layout.views(); k++) {
-                    double az = Math.toRadians(layout.axisAzimuthDeg(k));
-                    cam.lookAtDirection(new Vector3f((float) Math.sin(az), 0, (float) -Math.cos(az)), Vector3f.UNIT_Y);
+                    if (layout.ring()) {
+                        double az = Math.toRadians(layout.axisAzimuthDeg(k));
+                        cam.lookAtDirection(new Vector3f((float) Math.sin(az), 0, (float) -Math.cos(az)), Vector3f.UNIT_Y);
+                    } else { // east-north-up to jME's axes: x east, y up, z south
+                        double[] a = layout.axes(k);
+                        cam.lookAtDirection(new Vector3f((float) a[6], (float) a[8], (float) -a[7]),
+                                new Vector3f((float) a[3], (float) a[5], (float) -a[4]));
+                    }
                     cam.setLocation(Vector3f.ZERO);
-                    double viewFrom = k * 360.0 / layout.views(), viewSpan = 360.0 / layout.views();
+                    double[] viewSector = layout.azimuthSectorDeg(k);
                     for (int i = 0; i < sectors.length; i++) {
-                        geometries.get(i).setCullHint(AzimuthSector.overlaps(sectors[i], viewFrom, viewSpan)
+                        geometries.get(i).setCullHint(viewSector == null
+                                || AzimuthSector.overlaps(sectors[i], viewSector[0], viewSector[1])
                                 ? Spatial.CullHint.Never : Spatial.CullHint.Always);
                     }
                     renderer.setFrameBuffer(target);

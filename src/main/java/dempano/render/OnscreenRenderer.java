@@ -235,8 +235,8 @@ public final class OnscreenRenderer extends SimpleApplication {
         material.getAdditionalRenderState().setFaceCullMode(com.jme3.material.RenderState.FaceCullMode.Off);
         // Level of detail for the window: its pixels per degree, a one-pixel bound.
         double ppd = settings.getHeight() / 60.0;
-        terrain = TerrainBuilder.build(mosaic, start, new Refraction(refractionK), opt.rangeMetres(), material, ppd, 1,
-                exaggeration).root();
+        terrain = TerrainBuilder.build(mosaic, start, new Refraction(refractionK), opt.rangeMetres(), material,
+                TerrainBuilder.Detail.of(ppd, 1).withExaggeration(exaggeration)).root();
         rootNode.attachChild(terrain);
     }
 

@@ -37,6 +37,84 @@ public final class SummitProjector {
     }
 
     /**
+     * Every summit of the list within range that lies on a camera's image (or within a pixel of its edge), in
+     * list order, placed with the same geometry as {@link #project(Panorama, SummitList)} and the camera's own
+     * model ({@link dempano.camera.CameraView#pixelOf}): {@link SummitSighting#pixelX()} is the image column
+     * coordinate with pixel centres at c + 0.5 (OpenCV's px + 0.5), likewise {@code pixelY} for rows. The
+     * visibility window is as the panorama's, in image columns and rows at the camera's focal length.
+     *
+     * @throws IllegalStateException when the image was rendered without distances
+     */
+    public static List<SummitSighting> project(dempano.CameraImage image, SummitList list) {
+        if (!image.hasDistance()) {
+            throw new IllegalStateException("summit visibility is decided from distances: this view was rendered"
+                    + " without them (colour only)");
+        }
+        PanoramaMetadata m = image.metadata();
+        dempano.camera.CameraView view = image.view();
+        LocalFrame eye = new LocalFrame(m.latDeg(), m.lonDeg(), m.eyeAltitudeMetres());
+        Refraction refraction = new Refraction(m.refractionCoefficient());
+        double[] eyeFoot = new double[3];
+        Ellipsoid.toEcef(m.latDeg(), m.lonDeg(), 0, eyeFoot);
+        int w = image.widthPx(), h = image.heightPx();
+        float[] distance = image.distanceArray();
+        // Image pixels per degree near the axis (the window is a tolerance, not a measurement).
+        double ppd = view.intrinsics().fxPx() * Math.PI / 180;
+        List<SummitSighting> out = new ArrayList<>();
+        double[] foot = new double[3], enu = new double[3], px = new double[2];
+        for (Summit s : list.summits()) {
+            if (Double.isNaN(s.elevationMetres())) {
+                continue;
+            }
+            Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
+            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
+            if (chordGround > m.rangeMetres() * 1.01 + 1000) {
+                continue;
+            }
+            eye.toEnu(s.latDeg(), s.lonDeg(), s.elevationMetres() + refraction.liftMetres(chordGround), enu);
+            double horizontal = Math.hypot(enu[0], enu[1]);
+            if (horizontal > m.rangeMetres() || horizontal < 1) {
+                continue;
+            }
+            view.pixelOf(enu[0], enu[1], enu[2], px);
+            if (Double.isNaN(px[0]) || px[0] < -1.5 || px[0] > w + 0.5 || px[1] < -1.5 || px[1] > h + 0.5) {
+                continue; // behind the camera or off the image
+            }
+            double az = Math.toDegrees(Math.atan2(enu[0], enu[1]));
+            if (az < 0) {
+                az += 360;
+            }
+            double el = Math.toDegrees(Math.atan2(enu[2], horizontal));
+            double slant = Math.sqrt(horizontal * horizontal + enu[2] * enu[2]);
+            int col = (int) Math.round(px[0]), row = (int) Math.round(px[1]);
+            boolean inside = view.contains(px[0], px[1]);
+            double atPixel = inside ? distance[row * w + col] : Double.NaN;
+            int dc = Math.max(1, (int) Math.ceil(Math.toDegrees(Math.atan(POSITION_TOLERANCE_METRES / horizontal)) * ppd));
+            int up = Math.max(1, (int) Math.ceil(Math.toDegrees(Math.atan(HEIGHT_TOLERANCE_UP_METRES / horizontal)) * ppd));
+            int down = Math.max(1, (int) Math.ceil(Math.toDegrees(Math.atan(HEIGHT_TOLERANCE_DOWN_METRES / horizontal)) * ppd));
+            double tolerance = Math.max(DISTANCE_TOLERANCE_METRES, DISTANCE_TOLERANCE_FRACTION * slant);
+            double seen = Double.NaN;
+            if (inside) {
+                for (int c = Math.max(0, col - dc); c <= Math.min(w - 1, col + dc); c++) {
+                    for (int r = Math.max(0, row - up); r <= Math.min(h - 1, row + down); r++) {
+                        float d = distance[r * w + c];
+                        if (Float.isFinite(d)) {
+                            if (Double.isNaN(seen) || Math.abs(d - slant) < Math.abs(seen - slant)) {
+                                seen = d;
+                            }
+                            break; // the first terrain pixel of this column
+                        }
+                    }
+                }
+            }
+            boolean visible = !Double.isNaN(seen) && Math.abs(seen - slant) <= tolerance;
+            double ground = Geodesy.distanceMetres(m.latDeg(), m.lonDeg(), s.latDeg(), s.lonDeg());
+            out.add(new SummitSighting(s, az, el, px[0] + 0.5, px[1] + 0.5, slant, ground, atPixel, seen, visible));
+        }
+        return out;
+    }
+
+    /**
      * Every summit of the list within the panorama's range, in list order.
      *
      * @throws IllegalStateException when the panorama was rendered without distances (colour only):

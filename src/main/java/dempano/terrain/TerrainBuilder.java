@@ -95,50 +95,59 @@ public final class TerrainBuilder {
      */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 double pixelsPerDegree, double maxErrorPx) {
-        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, 1);
+        return build(mosaic, eye, refraction, rangeMetres, material, Detail.of(pixelsPerDegree, maxErrorPx));
     }
 
     /**
-     * As above, heights multiplied by {@code exaggeration} (the fly-through's vertical exaggeration;
-     * 1 for panoramas). The colour and the level of detail use the true heights.
+     * How finely and with what help a terrain is built: the level of detail, the fly-through's exaggeration,
+     * the caches and the culling below the lowest sampled ray.
+     *
+     * @param pixelsPerDegree resolution the level of detail is chosen for, pixels per degree (of the views)
+     * @param maxErrorPx      bound on a simplified patch's screen error, pixels (0 = full resolution everywhere)
+     * @param exaggeration    heights multiplied by this (the fly-through's vertical exaggeration; 1 for
+     *                        panoramas and cameras); the colour and the level of detail use the true heights
+     * @param cache           patch deviations, taken where it has them and added where it lacks them (null = no
+     *                        cache); it must belong to the DEM source the mosaic came from
+     * @param meshes          geometries of fine patches (levels below {@link #MERGED_LEVEL}) kept across builds
+     *                        (null = every geometry is made for this build and listed in
+     *                        {@link Terrain#transientParts()}). Cached geometries are shared with later builds:
+     *                        draw one build's terrain before making the next.
+     * @param cullBelowDeg    leaves out the patches {@link HorizonCulling} finds hidden from the eye: wholly below
+     *                        the horizon of nearer terrain, or wholly below this elevation angle, degrees (the
+     *                        lowest any target pixel samples). NaN = draw every patch (a fly-through, whose eye
+     *                        moves; the level of detail then bounds the screen angle only, not the distance)
      */
-    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
-                                double pixelsPerDegree, double maxErrorPx, double exaggeration) {
-        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, null);
+    public record Detail(double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
+                         MeshCache meshes, double cullBelowDeg) {
+        /** A level of detail alone: no exaggeration, caches or culling. */
+        public static Detail of(double pixelsPerDegree, double maxErrorPx) {
+            return new Detail(pixelsPerDegree, maxErrorPx, 1, null, null, Double.NaN);
+        }
+
+        public Detail withExaggeration(double v) {
+            return new Detail(pixelsPerDegree, maxErrorPx, v, cache, meshes, cullBelowDeg);
+        }
+
+        public Detail withCache(DeviationCache v) {
+            return new Detail(pixelsPerDegree, maxErrorPx, exaggeration, v, meshes, cullBelowDeg);
+        }
+
+        public Detail withMeshes(MeshCache v) {
+            return new Detail(pixelsPerDegree, maxErrorPx, exaggeration, cache, v, cullBelowDeg);
+        }
+
+        public Detail withCullBelowDeg(double v) {
+            return new Detail(pixelsPerDegree, maxErrorPx, exaggeration, cache, meshes, v);
+        }
     }
 
-    /**
-     * As above, taking patch deviations from {@code cache} where it has them and adding those it
-     * lacks (null = no cache). The cache must belong to the DEM source the mosaic came from.
-     */
+    /** As above, built as {@code detail} says. */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
-                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache) {
-        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, cache,
-                Double.NaN);
-    }
-
-    /**
-     * As above, and leaves out the patches {@link HorizonCulling} finds hidden from the eye: wholly
-     * below the horizon of nearer terrain, or wholly below {@code cullBelowDeg} (the lowest elevation
-     * angle any panorama pixel samples). NaN = draw every patch (a fly-through, whose eye moves; the
-     * level of detail then bounds the screen angle only, not the distance).
-     */
-    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
-                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
-                                double cullBelowDeg) {
-        return build(mosaic, eye, refraction, rangeMetres, material, pixelsPerDegree, maxErrorPx, exaggeration, cache,
-                null, cullBelowDeg);
-    }
-
-    /**
-     * As above, taking the geometry of fine patches (levels below {@link #MERGED_LEVEL}) from
-     * {@code meshes} where it holds them and adding those it lacks (null = every geometry is made for
-     * this build and listed in {@link Terrain#transientParts()}). Cached geometries are shared with
-     * later builds: draw one build's terrain before making the next.
-     */
-    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
-                                double pixelsPerDegree, double maxErrorPx, double exaggeration, DeviationCache cache,
-                                MeshCache meshes, double cullBelowDeg) {
+                                Detail detail) {
+        double pixelsPerDegree = detail.pixelsPerDegree(), maxErrorPx = detail.maxErrorPx();
+        double exaggeration = detail.exaggeration(), cullBelowDeg = detail.cullBelowDeg();
+        DeviationCache cache = detail.cache();
+        MeshCache meshes = detail.meshes();
         LocalFrame frame = eye.eyeFrame();
         double eyeRow = mosaic.rowOf(eye.latDeg()), eyeCol = mosaic.colOf(eye.lonDeg());
         // Cells of the mosaic that can lie within range (a generous box; exact cut later). Rows are

@@ -29,7 +29,7 @@ class TerrainBuilderTest {
     static TerrainBuilder.Terrain build(DemSource dem, double lat, double lon, double rangeMetres, DeviationCache cache) {
         Mosaic m = Mosaic.around(dem, lat, lon, rangeMetres, MissingTilePolicy.SEA_LEVEL);
         Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, 2);
-        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null, 20, 0.5, 1, cache);
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null, TerrainBuilder.Detail.of(20, 0.5).withCache(cache));
     }
 
     @ParameterizedTest
@@ -78,7 +78,8 @@ class TerrainBuilderTest {
                                         MeshCache meshes) {
         Mosaic m = Mosaic.around(dem, lat, lon, rangeMetres, MissingTilePolicy.SEA_LEVEL);
         Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, 2);
-        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null, 20, 0.5, 1, cache, meshes, Double.NaN);
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), rangeMetres, null,
+                TerrainBuilder.Detail.of(20, 0.5).withCache(cache).withMeshes(meshes));
     }
 
     @Test
@@ -114,7 +115,8 @@ class TerrainBuilderTest {
         Mosaic m = Mosaic.around(dem, lat, lon, 40_000, MissingTilePolicy.SEA_LEVEL);
         Viewpoint eye = Viewpoint.onDem(m, lat, lon, 0, eyeHeightMetres);
         // A cull angle: a panorama's build, whose fixed eye the distance bound needs.
-        return TerrainBuilder.build(m, eye, new Refraction(0.13), 40_000, null, 20, 0.5, 1, cache, null, -30);
+        return TerrainBuilder.build(m, eye, new Refraction(0.13), 40_000, null,
+                TerrainBuilder.Detail.of(20, 0.5).withCache(cache).withCullBelowDeg(-30));
     }
 
     /** A rippled slope rising northwards (every facet rises north, 6 % to 24 %) north of 46.45°, the sea south of it. */

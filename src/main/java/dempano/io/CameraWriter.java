@@ -1,0 +1,223 @@
+package dempano.io;
+
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import dempano.CameraImage;
+import dempano.camera.CameraIntrinsics;
+import dempano.camera.CameraPose;
+import dempano.panorama.PanoramaMetadata;
+import dempano.panorama.Silhouettes;
+import dempano.summits.SummitSighting;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.AffineTransform;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.ImageIO;
+
+/**
+ * Writes a camera's rendered view on the photo's own pixel grid, all or nothing ({@link OutputSet}):
+ * {@code P.png} (the rendered view with its silhouettes), {@code P-distance.npy} (float32, rows × columns, metres,
+ * sky +∞), {@code P.json} (intrinsics, pose, conventions, eye, tiles, timings), {@code P-overlay.png} (the photo,
+ * or the rendered view when there is none, with the rendered silhouettes in red and the summits in frame marked
+ * and labelled) and, when summits are given, {@code P-summits.json} and {@code P-summits.csv} as the panorama
+ * writes them ({@link SummitWriter}).
+ */
+public final class CameraWriter {
+    private CameraWriter() {
+    }
+
+    /**
+     * What goes with the view.
+     *
+     * @param photo      the photo as displayed (EXIF orientation applied), the same size as the view; null = overlay
+     *                   on the rendered view
+     * @param summits    the summits in frame ({@link dempano.summits.SummitProjector#project(CameraImage,
+     *                   dempano.summits.SummitList)}); null = no summit files
+     * @param provenance where each camera value came from (a line each), for the metadata
+     */
+    public record Extras(BufferedImage photo, List<SummitSighting> summits, List<String> provenance) {
+        public static final Extras NONE = new Extras(null, null, List.of());
+    }
+
+    /** Writes every file for prefix P; returns their paths. */
+    public static List<Path> write(CameraImage image, String prefix, Extras extras) throws IOException {
+        try (OutputSet set = OutputSet.open(prefix)) {
+            List<String> suffixes = new ArrayList<>(List.of(".png", "-distance.npy", "-overlay.png", ".json"));
+            if (extras.summits() != null) {
+                suffixes.addAll(List.of("-summits.json", "-summits.csv"));
+            }
+            set.checkTargets(suffixes);
+            List<Path> files = new ArrayList<>();
+            if (image.hasColour()) {
+                BufferedImage rendered = image.image();
+                files.add(set.write(".png", out -> ImageIO.write(rendered, "png", out)));
+            }
+            if (image.hasDistance()) {
+                files.add(set.write("-distance.npy", FloatArrayWriter.npy(image.distanceBuffer(), image.heightPx(),
+                        image.widthPx())));
+                BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
+                files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
+            }
+            if (extras.summits() != null) {
+                String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
+                files.add(set.write("-summits.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
+                files.add(set.write("-summits.csv", out -> out.write(csv.getBytes(StandardCharsets.UTF_8))));
+            }
+            List<Path> all = new ArrayList<>(files);
+            all.add(set.target(".json"));
+            String meta = metadataJson(image, extras.provenance(), all);
+            files.add(set.write(".json", out -> out.write(meta.getBytes(StandardCharsets.UTF_8))));
+            set.commit();
+            return files;
+        }
+    }
+
+    /**
+     * The photo (or the rendered view) with the rendered silhouettes (skylines and depth edges,
+     * {@link Silhouettes#isEdge}) in red, and each summit in frame as a ring at its pixel: yellow and labelled
+     * "NAME 1234 m · 12.3 km" when visible, grey when hidden.
+     */
+    public static BufferedImage overlay(CameraImage image, BufferedImage photo, List<SummitSighting> summits) {
+        int w = image.widthPx(), h = image.heightPx();
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = out.createGraphics();
+        if (photo != null) {
+            if (photo.getWidth() != w || photo.getHeight() != h) {
+                throw new IllegalArgumentException("the photo is " + photo.getWidth() + "×" + photo.getHeight()
+                        + " pixels as displayed, the camera's image " + w + "×" + h);
+            }
+            g.drawImage(photo, 0, 0, null);
+        } else if (image.hasColour()) {
+            g.drawImage(image.image(), 0, 0, null);
+        }
+        float[] distance = image.distanceArray();
+        int red = 0xffff2020;
+        for (int row = 0; row < h; row++) {
+            for (int col = 0; col < w; col++) {
+                if (Silhouettes.isEdge(distance, w, h, col, row)) {
+                    out.setRGB(col, row, red);
+                }
+            }
+        }
+        if (summits != null) {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, Math.max(11, Math.min(40, h / 40))));
+            g.setStroke(new BasicStroke(2f));
+            for (SummitSighting s : summits) {
+                double x = s.pixelX() - 0.5, y = s.pixelY() - 0.5; // OpenCV pixel coordinate
+                g.setColor(s.visible() ? Color.YELLOW : Color.LIGHT_GRAY);
+                g.drawOval((int) Math.round(x) - 6, (int) Math.round(y) - 6, 12, 12);
+                if (s.visible()) {
+                    String label = String.format(java.util.Locale.ROOT, "%s %.0f m · %.1f km", s.summit().name(),
+                            s.summit().elevationMetres(), s.slantMetres() / 1000);
+                    g.drawString(label, (int) Math.round(x) + 9, (int) Math.round(y) - 9);
+                }
+            }
+        }
+        g.dispose();
+        return out;
+    }
+
+    /**
+     * A photo as displayed: the stored pixels turned as its EXIF orientation says (1 as stored, 3 turned 180°,
+     * 6 turned 90° clockwise, 8 turned 90° anticlockwise; mirrored orientations 2, 4, 5, 7 are mirrored too).
+     */
+    public static BufferedImage displayed(BufferedImage stored, int exifOrientation) {
+        int w = stored.getWidth(), h = stored.getHeight();
+        boolean swap = exifOrientation >= 5 && exifOrientation <= 8;
+        AffineTransform t = new AffineTransform();
+        switch (exifOrientation) {
+            case 2 -> t.setTransform(-1, 0, 0, 1, w, 0);
+            case 3 -> t.setTransform(-1, 0, 0, -1, w, h);
+            case 4 -> t.setTransform(1, 0, 0, -1, 0, h);
+            case 5 -> t.setTransform(0, 1, 1, 0, 0, 0);
+            case 6 -> t.setTransform(0, 1, -1, 0, h, 0);
+            case 7 -> t.setTransform(0, -1, -1, 0, h, w);
+            case 8 -> t.setTransform(0, -1, 1, 0, 0, w);
+            default -> {
+                return stored;
+            }
+        }
+        BufferedImage out = new BufferedImage(swap ? h : w, swap ? w : h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = out.createGraphics();
+        g.drawImage(stored, t, null);
+        g.dispose();
+        return out;
+    }
+
+    /** The metadata document of a camera view. */
+    public static String metadataJson(CameraImage image, List<String> provenance, List<Path> files) {
+        PanoramaMetadata m = image.metadata();
+        CameraIntrinsics k = image.view().intrinsics();
+        CameraPose pose = image.pose();
+        Map<String, Object> doc = new LinkedHashMap<>();
+        Map<String, Object> in = new LinkedHashMap<>();
+        in.put("width", k.widthPx());
+        in.put("height", k.heightPx());
+        in.put("fxPx", k.fxPx());
+        in.put("fyPx", k.fyPx());
+        in.put("cxPx", k.cxPx());
+        in.put("cyPx", k.cyPx());
+        in.put("distortion", Map.of("k1", k.distortion().k1(), "k2", k.distortion().k2(), "p1", k.distortion().p1(),
+                "p2", k.distortion().p2(), "k3", k.distortion().k3()));
+        in.put("horizontalFovDeg", k.horizontalFovDeg());
+        in.put("verticalFovDeg", k.verticalFovDeg());
+        doc.put("intrinsics", in);
+        Map<String, Object> p = new LinkedHashMap<>();
+        p.put("latDeg", pose.latDeg());
+        p.put("lonDeg", pose.lonDeg());
+        p.put("altitudeMetres", pose.absoluteAltitude() ? pose.altitudeMetres() : null);
+        p.put("offsetMetres", pose.absoluteAltitude() ? null : pose.offsetMetres());
+        p.put("cameraHeightMetres", pose.cameraHeightMetres());
+        p.put("headingDeg", pose.orientation().headingDeg());
+        p.put("pitchDeg", pose.orientation().pitchDeg());
+        p.put("rollDeg", pose.orientation().rollDeg());
+        doc.put("pose", p);
+        Map<String, Object> eye = new LinkedHashMap<>();
+        eye.put("latDeg", m.latDeg());
+        eye.put("lonDeg", m.lonDeg());
+        eye.put("groundElevationMetres", m.groundElevationMetres());
+        eye.put("eyeAltitudeMetres", m.eyeAltitudeMetres());
+        doc.put("eye", eye);
+        Map<String, String> conventions = new LinkedHashMap<>();
+        conventions.put("pixels", "OpenCV: pixel (column i, row j) has its centre at (i, j); row 0 at the top; the photo"
+                + " as displayed (EXIF orientation applied)");
+        conventions.put("camera", "x right, y down, z forward (OpenCV); distortion Brown-Conrady k1 k2 p1 p2 k3 on"
+                + " normalized coordinates");
+        conventions.put("heading", "azimuth of the optical axis, degrees clockwise from true north");
+        conventions.put("pitch", "optical axis above the eye's local horizontal, degrees, positive up");
+        conventions.put("roll", "about the optical axis, degrees, positive turns the image clockwise as seen by the"
+                + " photographer (heading, then pitch, then roll)");
+        conventions.put("frame", "directions in the eye's local east-north-up frame on WGS84");
+        conventions.put("distance", "metres, float32, straight line from the eye to the terrain seen through the"
+                + " pixel centre; sky = +Infinity; NaN where the lens model has no ray");
+        doc.put("conventions", conventions);
+        doc.put("earthModel", PanoramaMetadata.EARTH_MODEL);
+        doc.put("refractionCoefficient", m.refractionCoefficient());
+        doc.put("rangeMetres", m.rangeMetres());
+        doc.put("depthMode", m.depthMode().optionName());
+        doc.put("views", m.views());
+        doc.put("viewSizePx", List.of(m.viewWidthPx(), m.viewHeightPx()));
+        doc.put("tilesUsed", m.tilesUsed());
+        doc.put("tilesMissing", m.tilesMissing());
+        doc.put("warnings", m.warnings());
+        doc.put("timingsMillis", m.timingsMillis());
+        doc.put("glRenderer", m.glRenderer());
+        doc.put("provenance", provenance);
+        List<String> names = new ArrayList<>();
+        files.forEach(f -> names.add(f.getFileName().toString()));
+        doc.put("files", names);
+        Gson gson = new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create();
+        return gson.toJson(doc) + "\n";
+    }
+}

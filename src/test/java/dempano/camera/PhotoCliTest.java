@@ -1,0 +1,136 @@
+package dempano.camera;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.cli.Main;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code dempano photo} end to end: a camera from a JPEG's EXIF/XMP alone, from flags alone, and what is missing. */
+class PhotoCliTest {
+    @TempDir
+    Path tmp;
+
+    /** An SRTM3 tile of smooth hills (400–1000 m). */
+    static Path tile(Path dir, int lat, int lon) throws IOException {
+        ByteBuffer b = ByteBuffer.allocate(2 * 1201 * 1201);
+        for (int r = 0; r < 1201; r++) {
+            for (int c = 0; c < 1201; c++) {
+                double la = lat + 1 - r / 1200.0, lo = lon + c / 1200.0;
+                b.putShort((short) Math.round(700 + 150 * Math.sin(la * 20) + 150 * Math.cos(lo * 15)));
+            }
+        }
+        return Files.write(dir.resolve(String.format("N%02dE%03d.hgt", lat, lon)), b.array());
+    }
+
+    private record Run(int exit, String out, String err) {
+    }
+
+    private static Run run(String... args) {
+        PrintStream out = System.out, err = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream(), e = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+            int exit = Main.run(args);
+            return new Run(exit, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+    }
+
+    /** The shape and values of a float32 .npy file. */
+    static float[] npy(Path file, int rows, int cols) throws IOException {
+        byte[] b = Files.readAllBytes(file);
+        ByteBuffer buf = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
+        int headerLen = buf.getShort(8) & 0xffff;
+        String header = new String(b, 10, headerLen, StandardCharsets.US_ASCII);
+        assertTrue(header.contains("'shape': (" + rows + ", " + cols + ")"), header);
+        assertTrue(header.contains("<f4"), header);
+        float[] v = new float[rows * cols];
+        buf.position(10 + headerLen);
+        buf.asFloatBuffer().get(v);
+        return v;
+    }
+
+    private void checkOutputs(String prefix, int w, int h) throws IOException {
+        BufferedImage png = ImageIO.read(Path.of(prefix + ".png").toFile());
+        BufferedImage overlay = ImageIO.read(Path.of(prefix + "-overlay.png").toFile());
+        assertEquals(w, png.getWidth());
+        assertEquals(h, png.getHeight());
+        assertEquals(w, overlay.getWidth());
+        assertEquals(h, overlay.getHeight());
+        float[] d = npy(Path.of(prefix + "-distance.npy"), h, w);
+        long sky = 0, terrain = 0;
+        for (float v : d) {
+            if (v == Float.POSITIVE_INFINITY) {
+                sky++;
+            } else if (v > 0 && v < 25_000) {
+                terrain++;
+            }
+        }
+        assertEquals(d.length, sky + terrain, "every pixel is sky (+inf) or terrain within range");
+        assertTrue(sky > 0 && terrain > 0, sky + " sky, " + terrain + " terrain");
+        String json = Files.readString(Path.of(prefix + ".json"));
+        assertTrue(json.contains("\"width\": " + w) && json.contains("\"height\": " + h), json);
+        assertTrue(json.contains("\"conventions\"") && json.contains("N46E008"), json);
+    }
+
+    @Test
+    void aJpegsExifAndXmpAloneGiveTheCamera() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        // 2000 m above sea level over 400–1000 m hills, facing east (GPS true), DJI gimbal pitch and roll.
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).altitude(0, 200_000).direction("T", 9000)
+                .focal35(35).xmp("drone-dji:GimbalYawDegree=\"+90.0\" drone-dji:GimbalPitchDegree=\"-8.0\""
+                        + " drone-dji:GimbalRollDegree=\"+0.0\"")
+                .write(tmp, "drone.jpg", 160, 120);
+        String prefix = tmp.resolve("exif").toString();
+        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20");
+        assertEquals(0, r.exit(), r.err());
+        checkOutputs(prefix, 160, 120);
+        assertTrue(r.err().contains("35"), r.err()); // the provenance names the 35 mm-equivalent focal length
+    }
+
+    @Test
+    void flagsAloneGiveASyntheticCamera() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        String prefix = tmp.resolve("flags").toString();
+        Run r = run("photo", "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20", "--lat", "46.5",
+                "--lon", "8.5", "--altitude-m", "1500", "--heading-deg", "200", "--pitch-deg", "-5", "--roll-deg", "10",
+                "--hfov-deg", "60", "--width-px", "200", "--height-px", "100", "--distortion", "-0.1,0,0,0,0",
+                "--exact-distances");
+        assertEquals(0, r.exit(), r.err());
+        checkOutputs(prefix, 200, 100);
+        String json = Files.readString(Path.of(prefix + ".json"));
+        assertTrue(json.contains("\"k1\": -0.1") && json.contains("\"rollDeg\": 10.0"), json);
+    }
+
+    @Test
+    void whatIsMissingIsNamedWithItsFlag() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).focal35(35).write(tmp, "bare.jpg", 64, 48);
+        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("x").toString());
+        assertEquals(2, r.exit(), r.err());
+        assertTrue(r.err().contains(PhotoOverrides.HEADING) && r.err().contains(PhotoOverrides.PITCH)
+                && r.err().contains(PhotoOverrides.ROLL), r.err());
+        Run noSize = run("photo", "--dem-dir", dem.toString(), "--lat", "46.5", "--lon", "8.5");
+        assertEquals(2, noSize.exit(), noSize.err());
+        assertTrue(noSize.err().contains("--width-px"), noSize.err());
+        assertTrue(Files.notExists(tmp.resolve("x.png")));
+    }
+}
