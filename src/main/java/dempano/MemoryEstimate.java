@@ -14,13 +14,12 @@ import java.util.Locale;
  * each) and the pictures being encoded (colour, distance picture, labels: 12 per pixel). Added to the
  * larger peak: the tiles the mosaic holds and a base for the JVM, jME, the terrain mesh and caches.
  * The base and the headroom were set from the least {@code -Xmx} at which the CLI renders and writes
- * (bisection, 7 % steps): demo scene at 10, 30 and 50 px/° needed 133, 508 and 1268 MB, estimated
- * 165, 610 and 1483 MB; Mount Washington at 20 px/°, 100 km, needed 234 MB, estimated 333 MB. So a
- * request the estimate accepts runs, and one it refuses would need at least about 85 % of the
- * estimate. Exact per-pixel distances hold per view pixel also the surface ids read back (8) and
- * then the triangle seen (4), and 72 bytes per distinct triangle seen, counted as one per 16 view
- * pixels (measured: one per 57 at Mount Washington, 191 k triangles for 10.9 M view pixels): 25 bytes
- * per view pixel in all while stitching. Direct buffers (one view's read-back, the terrain mesh) count against their own limit.
+ * (bisection, 7 % steps, demo scene at 10, 30 and 50 px/°; figures below). So a request the estimate
+ * accepts runs, and one it refuses would need at least about 75 % of the estimate. Exact per-pixel distances (the default) hold per view pixel also the surface ids read
+ * back (8) and then the triangle seen (4), and 72 bytes per distinct triangle seen (one per 57 view
+ * pixels at Mount Washington): fitted as 19 bytes per view pixel with a 70 MB base, the demo scene
+ * needed 123, 725 and 1837 MB (exact) and is estimated 162, 741 and 1899 MB; without exact
+ * distances 133, 508 and 1268 MB, estimated 141, 560 and 1398 MB. Direct buffers (one view's read-back, the terrain mesh) count against their own limit.
  *
  * @param viewPixels     pixels of all views together (0 for the CPU reference)
  * @param panoramaPixels pixels of the panorama before any automatic crop
@@ -30,7 +29,7 @@ import java.util.Locale;
  */
 public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, long tileBytes, boolean exactDistances) {
     /** JVM, jME, shaders, terrain mesh and caches, bytes (measured; see the class comment). */
-    static final long BASE_BYTES = 100L << 20;
+    static final long BASE_BYTES = 70L << 20;
     /** Heap the collector needs beyond the live data to keep going (measured; see the class comment). */
     static final double HEADROOM = 1.1;
 
@@ -49,7 +48,7 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
 
     /** Bytes held while the views are stitched. */
     public long stitchingBytes() {
-        return (exactDistances ? 25 : 12) * viewPixels + 8 * panoramaPixels;
+        return (exactDistances ? 19 : 12) * viewPixels + 8 * panoramaPixels;
     }
 
     /** Bytes held while the files are written. */

@@ -14,13 +14,14 @@ import org.junit.jupiter.params.provider.CsvSource;
 /** The estimate against the least heap measured for the same requests, and its refusal message. */
 class MemoryEstimateTest {
     /**
-     * Rows: ppd, least -Xmx measured (MB) for the demo scene with the CLI (renders and writes). The
+     * Rows: ppd, least -Xmx measured (MB) for the demo scene with the CLI (renders and writes), exact distances on or off. The
      * estimate must cover the measurement (accepted requests run) by less than 35 % (few needless refusals).
      */
     @ParameterizedTest
-    @CsvSource({"10, 133", "30, 508", "50, 1268"})
-    void theEstimateCoversTheMeasuredLeastHeapWithoutMuchWaste(double ppd, long measuredMb) {
-        MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(ppd), true, 4 * 2_884_802L);
+    @CsvSource({"10, 133, false", "30, 508, false", "50, 1268, false", "10, 123, true", "30, 725, true", "50, 1837, true"})
+    void theEstimateCoversTheMeasuredLeastHeapWithoutMuchWaste(double ppd, long measuredMb, boolean exact) {
+        MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(ppd).withExactDistances(exact),
+                true, 4 * 2_884_802L);
         double ratio = e.heapBytes() / (measuredMb * 1024.0 * 1024.0);
         assertTrue(ratio >= 1 && ratio < 1.35, "estimate / measured = " + ratio);
     }
@@ -37,7 +38,9 @@ class MemoryEstimateTest {
         assertEquals(reference.writingBytes() + 2 * 4L * 3600 * 200, layered.writingBytes());
         MemoryEstimate gl = MemoryEstimate.of(req, true, 0);
         assertTrue(gl.viewPixels() >= reference.panoramaPixels(), "views cover the panorama");
-        assertEquals(12 * gl.viewPixels() + 8 * gl.panoramaPixels(), gl.stitchingBytes());
+        assertEquals(19 * gl.viewPixels() + 8 * gl.panoramaPixels(), gl.stitchingBytes(), "exact distances (default)");
+        MemoryEstimate interpolated = MemoryEstimate.of(req.withExactDistances(false), true, 0);
+        assertEquals(12 * interpolated.viewPixels() + 8 * interpolated.panoramaPixels(), interpolated.stitchingBytes());
     }
 
     @Test
