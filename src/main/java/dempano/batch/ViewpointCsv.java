@@ -141,6 +141,8 @@ public final class ViewpointCsv {
                 }
                 rows.add(row(line, f, headerFields, columns, defaults, firstLineOfId));
             }
+        } catch (ViewpointCsvException e) {
+            throw e;
         } catch (IOException e) {
             throw new UncheckedIOException(e); // cannot happen: the text is in memory
         }
