@@ -14,12 +14,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
@@ -30,11 +25,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * new, or not there at all. A row that fails (bad values, missing tiles, no DEM data at the
  * viewpoint, not enough memory, an unwritable file) is recorded as an error and the next row
  * starts; only a failure of the renderer itself (no OpenGL, the GL thread dying) stops the batch.
- *
- * <p>Row i's files are written on a second thread while row i + 1 is rendered (PNG encoding and
- * drawing overlap); rows are still recorded in order, each once its files are in place, so
- * {@link BatchListener#rowFinished} for row i comes after {@link BatchListener#rowStarted} for row i + 1.
- * At most two panoramas are in memory at a time.
  *
  * <p>{@link #cancel()}, from any thread (a shutdown hook on Ctrl-C), lets the row in progress finish
  * and commit its files, records it, and starts no further row. {@link #awaitFinished} waits for
@@ -94,13 +84,6 @@ public final class BatchRun {
         List<BatchResult> results = new ArrayList<>();
         String fatal = null;
         Path resultsFile = BatchRenderer.resultsFile(outDir);
-        // Row i's files are written on this thread while row i + 1 is rendered; results stay in row order.
-        ExecutorService writer = Executors.newSingleThreadExecutor(r -> {
-            Thread t = new Thread(r, "dempano-batch-writer");
-            t.setDaemon(true);
-            return t;
-        });
-        Pending pending = null;
         try (ResultsCsv csv = create(resultsFile)) {
             quietly(() -> listener.started(rows.size()));
             Map<String, String> seen = new HashMap<>(); // collision key → where the id was first
@@ -119,53 +102,34 @@ public final class BatchRun {
                 } else if (first != null) {
                     result = BatchResult.error(row, prefixed(row, "duplicate id '" + row.id() + "' (first at " + first + ")"), 0);
                 } else {
-                    OutputSet set = null;
                     try {
-                        // Opened before rendering: an unwritable destination is found first.
-                        set = OutputSet.open(outDir.resolve(row.id()).toString());
-                        set.checkTargets(PanoramaWriter.suffixes(row.request().colour(), row.request().distance(),
-                                row.request().layers(), writing));
-                        Panorama p = renderer.render(row.request());
-                        double renderSeconds = seconds(start);
-                        OutputSet handedOver = set;
-                        set = null;
-                        Future<Written> write = writer.submit(() -> write(handedOver, p));
-                        record(pending, csv, results, resultsFile);
-                        pending = new Pending(row, index, renderSeconds, write);
-                        continue;
+                        List<Path> files = renderOne(row);
+                        result = BatchResult.ok(row, files, seconds(start));
                     } catch (RenderFailedException | GlUnavailableException e) {
                         fatal = message(e);
                         result = BatchResult.error(row, prefixed(row, fatal), seconds(start));
                     } catch (OutOfMemoryError e) {
-                        result = BatchResult.error(row, prefixed(row, outOfMemory(e)), seconds(start));
+                        result = BatchResult.error(row, prefixed(row, "out of memory (" + e.getMessage()
+                                + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)"), seconds(start));
                     } catch (IOException e) {
                         result = BatchResult.error(row, prefixed(row, IoMessages.reason(e)), seconds(start));
                     } catch (RuntimeException e) {
                         result = BatchResult.error(row, prefixed(row, message(e)), seconds(start));
-                    } finally {
-                        if (set != null) {
-                            set.close(); // discards what an uncommitted set staged
-                        }
                     }
                 }
-                record(pending, csv, results, resultsFile);
-                pending = null;
-                record(new Pending(row, index, 0, CompletableFuture.completedFuture(new Written(null, 0, result))), csv,
-                        results, resultsFile);
+                BatchResult done = result;
+                results.add(done);
+                try {
+                    csv.append(done);
+                } catch (IOException e) {
+                    throw new IOException("cannot write " + resultsFile + ": " + IoMessages.reason(e), e);
+                }
+                quietly(() -> listener.rowFinished(done, index));
                 if (fatal != null) {
                     break;
                 }
             }
-            record(pending, csv, results, resultsFile);
-            pending = null;
         } finally {
-            writer.shutdown();
-            try {
-                // Only after a failure of results.csv: the row being written is finished, not cut off.
-                writer.awaitTermination(1, TimeUnit.MINUTES);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
             finished.countDown();
         }
         BatchSummary summary = new BatchSummary(results, rows.size(), cancelled.get() && results.size() < rows.size(),
@@ -174,76 +138,25 @@ public final class BatchRun {
         return summary;
     }
 
-    /** A row rendered and being written: its result is recorded once the write has ended. */
-    private record Pending(BatchRow row, int index, double renderSeconds, Future<Written> write) {
-    }
-
-    /** What a write gave: the files and its seconds, or (for rows that failed earlier) the result itself. */
-    private record Written(List<Path> files, double seconds, BatchResult result) {
-    }
-
-    /** On the writer thread: the row's files staged and committed as one set (discarded after a failure). */
-    private Written write(OutputSet set, Panorama p) throws IOException {
-        long start = System.nanoTime();
-        try (set) {
-            List<Path> files = PanoramaWriter.stage(set, p, writing);
-            set.commit();
-            return new Written(files, seconds(start), null);
-        }
-    }
-
-    /** Waits for a pending row's write, appends its line to results.csv and tells the listener; no-op for null. */
-    private void record(Pending pending, ResultsCsv csv, List<BatchResult> results, Path resultsFile) throws IOException {
-        if (pending == null) {
-            return;
-        }
-        BatchRow row = pending.row();
-        BatchResult result;
-        try {
-            Written w = getUninterruptibly(pending.write());
-            result = w.result() != null ? w.result() : BatchResult.ok(row, w.files(), pending.renderSeconds() + w.seconds());
-        } catch (ExecutionException e) {
-            Throwable c = e.getCause();
-            String why = c instanceof IOException io ? IoMessages.reason(io)
-                    : c instanceof OutOfMemoryError oom ? outOfMemory(oom) : message(c);
-            result = BatchResult.error(row, prefixed(row, why), pending.renderSeconds());
-        }
-        results.add(result);
-        try {
-            csv.append(result);
-        } catch (IOException e) {
-            throw new IOException("cannot write " + resultsFile + ": " + IoMessages.reason(e), e);
-        }
-        BatchResult done = result;
-        quietly(() -> listener.rowFinished(done, pending.index()));
-    }
-
-    private static <T> T getUninterruptibly(Future<T> f) throws ExecutionException {
-        boolean interrupted = false;
-        try {
-            while (true) {
-                try {
-                    return f.get();
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
-        } finally {
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
-        }
-    }
-
-    private static String outOfMemory(OutOfMemoryError e) {
-        return "out of memory (" + e.getMessage() + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)";
-    }
-
     private static ResultsCsv create(Path file) throws IOException {
         try {
             return ResultsCsv.create(file);
         } catch (IOException e) {
             throw new IOException("cannot write " + file + ": " + IoMessages.reason(e), e);
+        }
+    }
+
+    /** Renders one row and puts its files in place as one set; after a failure none of its new files is there. */
+    private List<Path> renderOne(BatchRow row) throws IOException {
+        String prefix = outDir.resolve(row.id()).toString();
+        // Opened before rendering: an unwritable destination is found first; close() discards an uncommitted set.
+        try (OutputSet set = OutputSet.open(prefix)) {
+            set.checkTargets(PanoramaWriter.suffixes(row.request().colour(), row.request().distance(),
+                    row.request().layers(), writing));
+            Panorama p = renderer.render(row.request());
+            List<Path> files = PanoramaWriter.stage(set, p, writing);
+            set.commit();
+            return files;
         }
     }
 
