@@ -127,19 +127,19 @@ public final class BatchCommand implements Callable<Integer> {
             err.println("dempano batch: ignoring columns " + String.join(", ", parsed.ignoredColumns()) + " (read: "
                     + String.join(", ", ViewpointCsv.COLUMNS) + ")");
         }
+        List<DemDirectory> sources = new ArrayList<>();
+        for (Path d : demDirs) {
+            DemDirectory one = new DemDirectory(d); // a missing DEM folder: exit 1 before anything is created
+            one.warnings().forEach(w -> err.println("  warning: " + w));
+            sources.add(one);
+        }
+        DemSource dem = PriorityDem.of(sources);
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {
             err.println("dempano batch: cannot create the output folder " + outDir + ": " + IoMessages.reason(e));
             return 1;
         }
-        List<DemDirectory> sources = new ArrayList<>();
-        for (Path d : demDirs) {
-            DemDirectory one = new DemDirectory(d);
-            one.warnings().forEach(w -> err.println("  warning: " + w));
-            sources.add(one);
-        }
-        DemSource dem = PriorityDem.of(sources);
         List<BatchRow> rows = parsed.rows();
         err.printf(Locale.ROOT, "dempano batch: %d rows (%d valid) from %s, DEM %s, into %s%n", rows.size(),
                 parsed.validCount(), viewpoints, dem.describe(), outDir);

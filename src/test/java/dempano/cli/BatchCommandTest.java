@@ -113,6 +113,21 @@ class BatchCommandTest {
         assertFalse(Files.exists(d.resolve("out")), "nothing created");
     }
 
+    @Test
+    void aMissingDemFolderOrAnOutputFolderThatIsAFileIsExitOne(@TempDir Path d) throws IOException {
+        Path csv = Files.writeString(d.resolve("v.csv"), "id,lat,lon\na,0.1,0.1\n");
+        String[] r = MainTest.run("batch", csv.toString(), "--out-dir", d.resolve("out").toString(), "--dem-dir",
+                d.resolve("no-such-dem").toString());
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains("no-such-dem"), r[1]);
+        assertFalse(r[1].contains("\tat "), r[1]);
+        assertFalse(Files.exists(d.resolve("out")), "nothing created");
+        Path file = Files.writeString(d.resolve("file"), "x");
+        r = batch(csv, file);
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains("dempano batch: cannot create the output folder " + file), r[1]);
+    }
+
     @ParameterizedTest(name = "[{index}] {0}")
     @CsvSource(delimiter = '|', value = {
             "--ppd -3                 | pixels per degree",
