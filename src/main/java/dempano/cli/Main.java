@@ -132,6 +132,7 @@ public final class Main implements Callable<Integer> {
         CommandLine cl = new CommandLine(new Main());
         cl.addSubcommand("fly", new FlyCommand());
         cl.addSubcommand("photo", new PhotoCommand());
+        cl.addSubcommand("batch", new BatchCommand());
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());
@@ -155,6 +156,25 @@ public final class Main implements Callable<Integer> {
             return 1;
         });
         return cl;
+    }
+
+    /** The value of {@code --missing-tiles} (auto, sea, error). */
+    static MissingTilePolicy missingTilePolicy(String option) {
+        return switch (option.toLowerCase(Locale.ROOT)) {
+            case "auto" -> MissingTilePolicy.AUTO;
+            case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;
+            case "error" -> MissingTilePolicy.ERROR;
+            default -> throw new IllegalArgumentException("--missing-tiles must be auto, sea or error, got " + option);
+        };
+    }
+
+    /** True for {@code --renderer reference} (or cpu), false for opengl (or gl). */
+    static boolean referenceRenderer(String option) {
+        return switch (option.toLowerCase(Locale.ROOT)) {
+            case "opengl", "gl" -> false;
+            case "reference", "cpu" -> true;
+            default -> throw new IllegalArgumentException("--renderer must be opengl or reference, got " + option);
+        };
     }
 
     /** The way out of an out-of-memory failure, with the heap size in use. */
@@ -183,12 +203,7 @@ public final class Main implements Callable<Integer> {
                 wanted.add(Layer.fromName(s.trim()));
             }
         }
-        MissingTilePolicy policy = switch (missingTiles.toLowerCase(Locale.ROOT)) {
-            case "auto" -> MissingTilePolicy.AUTO;
-            case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;
-            case "error" -> MissingTilePolicy.ERROR;
-            default -> throw new IllegalArgumentException("--missing-tiles must be auto, sea or error, got " + missingTiles);
-        };
+        MissingTilePolicy policy = missingTilePolicy(missingTiles);
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withOffsetMetres(offsetMetres)
                 .withAltitudeMetres(altitudeMetres == null ? Double.NaN : altitudeMetres)
                 .withEyeHeightMetres(eyeHeightMetres).withRangeMetres(range).withPixelsPerDegree(ppd)
@@ -241,11 +256,7 @@ public final class Main implements Callable<Integer> {
         if (repeat < 1 || repeat > 1000) {
             throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
         }
-        boolean reference = switch (renderer.toLowerCase(Locale.ROOT)) {
-            case "opengl", "gl" -> false;
-            case "reference", "cpu" -> true;
-            default -> throw new IllegalArgumentException("--renderer must be opengl or reference, got " + renderer);
-        };
+        boolean reference = referenceRenderer(renderer);
         PanoramaWriter.Options writing = new PanoramaWriter.Options(pfm, summitList == null ? null : java.util.List.of(),
                 labelOptions);
         long t0 = System.nanoTime();

@@ -1,0 +1,280 @@
+package dempano.batch;
+
+import dempano.PanoramaRequest;
+import dempano.io.IoMessages;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Pattern;
+import org.apache.commons.csv.CSVFormat;
+import org.apache.commons.csv.CSVParser;
+import org.apache.commons.csv.CSVRecord;
+
+/**
+ * Reads a batch's viewpoint file: CSV (RFC 4180 quoting, comma separated, UTF-8 with or without a
+ * byte-order mark, LF or CRLF line ends) whose first line names the columns. Column names are
+ * matched without regard to case or surrounding spaces, in any order:
+ *
+ * <ul>
+ *   <li>{@code id} (required): the output id, files {@code D/<id>.png} etc.; see {@link BatchIds}</li>
+ *   <li>{@code lat}, {@code lon} (required): viewpoint, decimal degrees north [-90, 90] and east [-180, 180]</li>
+ *   <li>{@code altitude_m}: absolute standing altitude, metres above sea level, instead of the DEM height</li>
+ *   <li>{@code offset_m}: signed correction added to the DEM height, metres</li>
+ *   <li>{@code eye_height_m}: eye above the standing altitude, metres (≥ 0)</li>
+ *   <li>{@code range_km}: range of sight, km</li>
+ *   <li>{@code ppd}: pixels per degree (360·ppd a whole number)</li>
+ * </ul>
+ *
+ * An empty optional cell, or a missing optional column, takes the value of the defaults request
+ * (the command line's options). Other columns (names, notes) are ignored and reported by
+ * {@link Parsed#ignoredColumns()}. Blank lines are skipped.
+ *
+ * <p>A bad row (a number that is not plain decimal, NaN, a coordinate or setting out of range, a
+ * wrong number of fields, an unsafe or repeated id) becomes an invalid {@link BatchRow} with a
+ * one-line reason that starts with its line number; the other rows are unaffected. A file that
+ * cannot be read, has no header line, lacks a required column or names a column twice throws
+ * {@link ViewpointCsvException}. Stateless.
+ */
+public final class ViewpointCsv {
+    public static final String ID = "id", LAT = "lat", LON = "lon", ALTITUDE_M = "altitude_m", OFFSET_M = "offset_m",
+            EYE_HEIGHT_M = "eye_height_m", RANGE_KM = "range_km", PPD = "ppd";
+    /** The columns read, required first. */
+    public static final List<String> COLUMNS = List.of(ID, LAT, LON, ALTITUDE_M, OFFSET_M, EYE_HEIGHT_M, RANGE_KM, PPD);
+    private static final List<String> REQUIRED = List.of(ID, LAT, LON);
+    /** Plain decimal numbers: no NaN, Infinity, hexadecimal, type suffixes or decimal commas. */
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
+
+    private ViewpointCsv() {
+    }
+
+    /**
+     * The rows of a viewpoint file, in file order.
+     *
+     * @param rows           one per data line, valid or not
+     * @param ignoredColumns header names not read (neither required nor optional columns)
+     */
+    public record Parsed(List<BatchRow> rows, List<String> ignoredColumns) {
+        public Parsed {
+            rows = List.copyOf(rows);
+            ignoredColumns = List.copyOf(ignoredColumns);
+        }
+
+        /** The rows that can be rendered. */
+        public long validCount() {
+            return rows.stream().filter(BatchRow::valid).count();
+        }
+    }
+
+    /**
+     * Reads a viewpoint file (UTF-8; a byte-order mark is skipped).
+     *
+     * @param defaults the request each row starts from (its latitude and longitude are replaced)
+     * @throws ViewpointCsvException when the file cannot be read or used at all; the message names the file
+     */
+    public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
+        String text;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
+        } catch (CharacterCodingException e) {
+            throw new ViewpointCsvException(file + ": not UTF-8 text", e);
+        } catch (IOException e) {
+            throw new ViewpointCsvException("cannot read the viewpoint file " + file + ": " + IoMessages.reason(e), e);
+        }
+        return parse(file.toString(), text, defaults);
+    }
+
+    /**
+     * Parses viewpoint CSV text.
+     *
+     * @param source   the file's name, for messages
+     * @param text     the whole file; a leading byte-order mark is skipped
+     * @param defaults the request each row starts from
+     * @throws ViewpointCsvException when there is no header line, a required column is missing, a
+     *                               column is named twice or the CSV is broken (an unclosed quote)
+     */
+    public static Parsed parse(String source, String text, PanoramaRequest defaults) throws ViewpointCsvException {
+        if (text.startsWith("\uFEFF")) {
+            text = text.substring(1);
+        }
+        CSVFormat format = CSVFormat.DEFAULT.builder().setIgnoreEmptyLines(true).setIgnoreSurroundingSpaces(true)
+                .setTrim(true).get();
+        int[] lineStarts = lineStarts(text);
+        List<BatchRow> rows = new ArrayList<>();
+        List<String> ignored = new ArrayList<>();
+        Map<String, Integer> columns = null;
+        int headerFields = 0;
+        Map<String, Integer> firstLineOfId = new HashMap<>();
+        try (CSVParser parser = CSVParser.parse(text, format)) {
+            Iterator<CSVRecord> it = parser.iterator();
+            while (true) {
+                CSVRecord r;
+                int line;
+                try {
+                    if (!it.hasNext()) {
+                        break;
+                    }
+                    r = it.next();
+                    line = lineOf(text, lineStarts, r.getCharacterPosition());
+                } catch (UncheckedIOException | IllegalStateException e) {
+                    throw new ViewpointCsvException(source + ": broken CSV after line " + Math.max(1, parser.getCurrentLineNumber())
+                            + " (" + oneLine(e.getCause() != null ? e.getCause().getMessage() : e.getMessage())
+                            + "): the file cannot be read past it", e);
+                }
+                List<String> f = r.toList();
+                if (f.stream().allMatch(String::isEmpty)) {
+                    continue; // a line of spaces or bare commas
+                }
+                if (columns == null) {
+                    columns = header(source, line, f, ignored);
+                    headerFields = f.size();
+                    continue;
+                }
+                rows.add(row(line, f, headerFields, columns, defaults, firstLineOfId));
+            }
+        } catch (ViewpointCsvException e) {
+            throw e;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // cannot happen: the text is in memory
+        }
+        if (columns == null) {
+            throw new ViewpointCsvException(source + ": empty: want a header line naming the columns " + String.join(",", REQUIRED)
+                    + " (optional: " + String.join(", ", COLUMNS.subList(REQUIRED.size(), COLUMNS.size())) + ")");
+        }
+        return new Parsed(rows, ignored);
+    }
+
+    private static Map<String, Integer> header(String source, int line, List<String> names, List<String> ignored)
+            throws ViewpointCsvException {
+        Map<String, Integer> columns = new LinkedHashMap<>();
+        for (int i = 0; i < names.size(); i++) {
+            String n = names.get(i).trim().toLowerCase(Locale.ROOT);
+            if (COLUMNS.contains(n)) {
+                if (columns.put(n, i) != null) {
+                    throw new ViewpointCsvException(source + ": line " + line + ": the header names column '" + n + "' twice");
+                }
+            } else if (!n.isEmpty()) {
+                ignored.add(names.get(i).trim());
+            }
+        }
+        for (String c : REQUIRED) {
+            if (!columns.containsKey(c)) {
+                throw new ViewpointCsvException(source + ": line " + line + ": the header has no column '" + c + "' (it has: "
+                        + oneLine(String.join(", ", names)) + "; required: " + String.join(", ", REQUIRED) + ")");
+            }
+        }
+        return columns;
+    }
+
+    private static BatchRow row(int line, List<String> f, int headerFields, Map<String, Integer> columns,
+                                PanoramaRequest defaults, Map<String, Integer> firstLineOfId) {
+        String id = f.size() > columns.get(ID) ? f.get(columns.get(ID)) : "";
+        String at = "line " + line + ": ";
+        if (f.size() != headerFields) {
+            return BatchRow.invalid(line, id, at + f.size() + " fields, the header has " + headerFields);
+        }
+        String idProblem = BatchIds.problem(id);
+        if (idProblem != null) {
+            return BatchRow.invalid(line, id, at + idProblem);
+        }
+        Integer first = firstLineOfId.putIfAbsent(BatchIds.collisionKey(id), line);
+        if (first != null) {
+            return BatchRow.invalid(line, id, at + "duplicate id '" + id + "' (first on line " + first + ")");
+        }
+        try {
+            double lat = number(f, columns, LAT, "latitude", Double.NaN);
+            double lon = number(f, columns, LON, "longitude", Double.NaN);
+            PanoramaRequest r = atViewpoint(defaults, lat, lon);
+            double altitude = number(f, columns, ALTITUDE_M, "altitude", Double.NaN);
+            if (!Double.isNaN(altitude)) {
+                r = r.withAltitudeMetres(altitude);
+            }
+            r = r.withOffsetMetres(number(f, columns, OFFSET_M, "offset", r.offsetMetres()))
+                    .withEyeHeightMetres(number(f, columns, EYE_HEIGHT_M, "eye height", r.eyeHeightMetres()))
+                    .withPixelsPerDegree(number(f, columns, PPD, "ppd", r.pixelsPerDegree()));
+            double rangeKm = number(f, columns, RANGE_KM, "range", Double.NaN);
+            if (!Double.isNaN(rangeKm)) {
+                r = r.withRangeMetres(rangeKm * 1000);
+            }
+            return new BatchRow(line, id, r, null);
+        } catch (IllegalArgumentException e) {
+            return BatchRow.invalid(line, id, at + oneLine(e.getMessage()));
+        }
+    }
+
+    /**
+     * A cell as a plain decimal number, or {@code absent} when the column is missing or the cell empty.
+     *
+     * @throws IllegalArgumentException naming the column and the text for anything else (NaN, 1,5, 0x10, 12m)
+     */
+    private static double number(List<String> f, Map<String, Integer> columns, String column, String what, double absent) {
+        Integer i = columns.get(column);
+        String s = i == null ? "" : f.get(i);
+        if (s.isEmpty()) {
+            if (REQUIRED.contains(column)) {
+                throw new IllegalArgumentException(what + " is empty");
+            }
+            return absent;
+        }
+        if (!DECIMAL.matcher(s).matches()) {
+            throw new IllegalArgumentException(what + " '" + BatchIds.printable(s) + "' is not a decimal number");
+        }
+        double v = Double.parseDouble(s);
+        if (!Double.isFinite(v)) {
+            throw new IllegalArgumentException(what + " '" + s + "' is out of range");
+        }
+        return v;
+    }
+
+    /** The defaults request at another viewpoint (its coordinates checked). */
+    static PanoramaRequest atViewpoint(PanoramaRequest d, double latDeg, double lonDeg) {
+        return new PanoramaRequest(latDeg, lonDeg, d.offsetMetres(), d.altitudeMetres(), d.eyeHeightMetres(), d.rangeMetres(),
+                d.pixelsPerDegree(), d.elevationRange(), d.refraction(), d.depthMode(), d.layers(), d.nearMetres(),
+                d.supersampling(), d.views(), d.missingTiles(), d.lodErrorPx(), d.colour(), d.distance(),
+                d.snapToSummitMetres(), d.clearViewMetres(), d.exactDistances());
+    }
+
+    /** Offsets at which lines start (a line ends at LF, CRLF or a lone CR). */
+    private static int[] lineStarts(String text) {
+        List<Integer> starts = new ArrayList<>();
+        starts.add(0);
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '\n' || (c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n'))) {
+                starts.add(i + 1);
+            }
+        }
+        return starts.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** The 1-based line of the first non-blank character at or after a record's start. */
+    private static int lineOf(String text, int[] lineStarts, long position) {
+        int p = (int) Math.min(position, text.length());
+        while (p < text.length() && Character.isWhitespace(text.charAt(p))) {
+            p++;
+        }
+        int lo = 0, hi = lineStarts.length - 1;
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (lineStarts[mid] <= p) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo + 1;
+    }
+
+    static String oneLine(String s) {
+        return s == null ? "" : s.replaceAll("\\s*\\R\\s*", " ").strip();
+    }
+}

@@ -1,0 +1,142 @@
+package dempano.bench;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import org.apache.commons.csv.CSVFormat;
+import org.apache.commons.csv.CSVParser;
+import org.apache.commons.csv.CSVRecord;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code gradle benchBatch}: seconds per panorama for N nearby viewpoints rendered by one
+ * {@code dempano batch} process against one {@code dempano} process per viewpoint, both through
+ * the installed start script (JVM start, OpenGL context and cold caches included), in alternating
+ * rounds. Prints a Markdown table; writes nothing else (outputs go to a temporary folder, deleted).
+ */
+@Command(name = "bench-batch", mixinStandardHelpOptions = true,
+        description = "Batch against one process per panorama, seconds per panorama.")
+public final class BatchBenchmark implements Callable<Integer> {
+    @Option(names = "--dempano", description = "The installed start script (default: ${DEFAULT-VALUE}).",
+            defaultValue = "build/install/dempano/bin/dempano")
+    Path dempano;
+    @Option(names = "--dem-dir", description = "DEM folder (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
+    Path demDir;
+    @Option(names = "--lat", description = "Centre, degrees north (default: ${DEFAULT-VALUE}, Mount Washington).", defaultValue = "44.2706")
+    double latDeg;
+    @Option(names = "--lon", description = "Centre, degrees east (default: ${DEFAULT-VALUE}).", defaultValue = "-71.3033")
+    double lonDeg;
+    @Option(names = "--viewpoints", description = "Viewpoints, on a grid about 3 km apart (default: ${DEFAULT-VALUE}).", defaultValue = "20")
+    int viewpoints;
+    @Option(names = "--rounds", description = "Alternating rounds of batch and single processes (default: ${DEFAULT-VALUE}).", defaultValue = "2")
+    int rounds;
+    @Option(names = "--settings", description = "Options for every panorama (default: ${DEFAULT-VALUE}).",
+            defaultValue = "--ppd 20 --range-km 100 --elevation-range -10:5")
+    String settings;
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new BatchBenchmark()).execute(args));
+    }
+
+    /** The grid: 5 columns, 0.03° of latitude (3.3 km) and 0.04° of longitude (3.2 km at 44° N) apart, centred. */
+    static List<double[]> grid(double lat, double lon, int n) {
+        List<double[]> out = new ArrayList<>();
+        int cols = 5, rows = (n + cols - 1) / cols;
+        for (int i = 0; i < n; i++) {
+            int r = i / cols, c = i % cols;
+            out.add(new double[] {lat + 0.03 * (r - (rows - 1) / 2.0), lon + 0.04 * (c - (cols - 1) / 2.0)});
+        }
+        return out;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (!Files.isExecutable(dempano)) {
+            System.err.println("bench-batch: " + dempano + " is missing: run gradle installDist first");
+            return 1;
+        }
+        Path tmp = Files.createTempDirectory("dempano-bench-batch");
+        List<double[]> at = grid(latDeg, lonDeg, viewpoints);
+        StringBuilder csv = new StringBuilder("id,lat,lon\n");
+        for (int i = 0; i < at.size(); i++) {
+            csv.append(String.format(Locale.ROOT, "v%02d,%.5f,%.5f%n", i, at.get(i)[0], at.get(i)[1]));
+        }
+        Path csvFile = Files.writeString(tmp.resolve("viewpoints.csv"), csv);
+        List<String> common = List.of(settings.trim().split("\\s+"));
+        double[] batchWhole = new double[rounds], batchRowMean = new double[rounds], batchRowWarmMedian = new double[rounds];
+        double[] singleMean = new double[rounds], singleMedian = new double[rounds];
+        for (int round = 0; round < rounds; round++) {
+            Path out = Files.createDirectories(tmp.resolve("batch" + round));
+            List<String> cmd = new ArrayList<>(List.of(dempano.toString(), "batch", csvFile.toString(), "--out-dir", out.toString(),
+                    "--dem-dir", demDir.toString()));
+            cmd.addAll(common);
+            batchWhole[round] = run(cmd, tmp) / viewpoints;
+            double[] rows = rowSeconds(out.resolve("results.csv"));
+            batchRowMean[round] = Arrays.stream(rows).average().orElse(Double.NaN);
+            batchRowWarmMedian[round] = median(Arrays.copyOfRange(rows, 1, rows.length));
+            System.err.printf(Locale.ROOT, "bench-batch: round %d batch: %.2f s per panorama (whole process / %d)%n",
+                    round + 1, batchWhole[round], viewpoints);
+            double[] single = new double[viewpoints];
+            for (int i = 0; i < viewpoints; i++) {
+                List<String> one = new ArrayList<>(List.of(dempano.toString(), "--lat", String.format(Locale.ROOT, "%.5f", at.get(i)[0]),
+                        "--lon", String.format(Locale.ROOT, "%.5f", at.get(i)[1]), "--dem-dir", demDir.toString(),
+                        "--out", tmp.resolve("single" + round + "-" + i).toString()));
+                one.addAll(common);
+                single[i] = run(one, tmp);
+            }
+            singleMean[round] = Arrays.stream(single).average().orElse(Double.NaN);
+            singleMedian[round] = median(single);
+            System.err.printf(Locale.ROOT, "bench-batch: round %d single: %.2f s per panorama (mean of %d processes)%n",
+                    round + 1, singleMean[round], viewpoints);
+        }
+        deleteTree(tmp);
+        System.out.printf(Locale.ROOT, "%d viewpoints about 3 km apart around %.4f, %.4f; %s; PNG + distance written; "
+                + "%d alternating rounds, median of rounds%n%n", viewpoints, latDeg, lonDeg, settings, rounds);
+        System.out.println("| way | seconds per panorama |");
+        System.out.println("|---|---:|");
+        System.out.printf(Locale.ROOT, "| one process per panorama (installed start script), mean | %.2f |%n", median(singleMean));
+        System.out.printf(Locale.ROOT, "| one process per panorama, median | %.2f |%n", median(singleMedian));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, whole process / %d | %.2f |%n", viewpoints, median(batchWhole));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, rows' own time, mean (cold first row included) | %.2f |%n", median(batchRowMean));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, rows 2–%d, median | %.2f |%n", viewpoints, median(batchRowWarmMedian));
+        return 0;
+    }
+
+    /** Runs a command to its end (output discarded), seconds of wall-clock time; fails on a non-zero exit. */
+    private static double run(List<String> cmd, Path dir) throws IOException, InterruptedException {
+        long t = System.nanoTime();
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log.txt").toFile()).start();
+        if (!p.waitFor(30, TimeUnit.MINUTES) || p.exitValue() != 0) {
+            throw new IOException(String.join(" ", cmd) + " failed: " + Files.readString(dir.resolve("log.txt")));
+        }
+        return (System.nanoTime() - t) / 1e9;
+    }
+
+    private static double[] rowSeconds(Path results) throws IOException {
+        try (CSVParser p = CSVParser.parse(Files.readString(results, StandardCharsets.UTF_8),
+                CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).get())) {
+            return p.getRecords().stream().mapToDouble((CSVRecord r) -> Double.parseDouble(r.get("seconds"))).toArray();
+        }
+    }
+
+    static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (var s = Files.walk(dir)) {
+            s.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        }
+    }
+}

@@ -1,0 +1,284 @@
+package dempano.cli;
+
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.batch.BatchListener;
+import dempano.batch.BatchRenderer;
+import dempano.batch.BatchResult;
+import dempano.batch.BatchRow;
+import dempano.batch.BatchRun;
+import dempano.batch.BatchSummary;
+import dempano.batch.ViewpointCsv;
+import dempano.batch.ViewpointCsvException;
+import dempano.dem.DemDirectory;
+import dempano.dem.DemSource;
+import dempano.dem.PriorityDem;
+import dempano.geo.Refraction;
+import dempano.io.IoMessages;
+import dempano.io.PanoramaWriter;
+import dempano.panorama.DepthMode;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Layer;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.text.DecimalFormat;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import me.tongfei.progressbar.ConsoleProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import me.tongfei.progressbar.ProgressBarStyle;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code dempano batch VIEWPOINTS.csv --out-dir D}: every viewpoint of a CSV rendered in one process
+ * (see {@link BatchRenderer}, {@link ViewpointCsv} for the columns). The options are the main
+ * command's, as defaults for every row.
+ */
+@Command(name = "batch", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Renders the panorama of every viewpoint in a CSV file in one process (tiles, patch deviations and "
+                + "meshes are reused from row to row).",
+                "CSV columns (header line, any order, case-insensitive): id, lat, lon (required); altitude_m, offset_m, "
+                        + "eye_height_m, range_km, ppd (optional: an empty cell takes the option's value). Other columns are ignored.",
+                "Ids: letters, digits, '.', '_', '-' (no paths), unique without regard to case."},
+        footer = {"", "Writes D/<id>.png, D/<id>-distance.npy, D/<id>-distance.png, D/<id>.json per row (each row's files as one "
+                + "set: complete or absent) and D/results.csv (id,status,files,seconds,error; a line per row as it finishes).",
+                "A bad row (bad number, coordinate out of range, missing tile, unsafe or repeated id) is reported and the rest go on.",
+                "Ctrl-C stops after the row in progress: its files are complete and it is in results.csv.",
+                "Exit codes: 0 every row done, 3 some rows failed (see results.csv), 1 unusable input (viewpoint file, "
+                        + "header, DEM folder, output folder, OpenGL), 2 bad arguments, 130 interrupted."})
+public final class BatchCommand implements Callable<Integer> {
+    /** Exit code when some rows failed and the others were done. */
+    public static final int EXIT_SOME_ROWS_FAILED = 3;
+    /** Exit code when the batch was interrupted (Ctrl-C) after the row in progress. */
+    public static final int EXIT_INTERRUPTED = 130;
+    /** How long Ctrl-C waits for the row in progress to finish before the process ends anyway. */
+    static final Duration INTERRUPT_GRACE = Duration.ofSeconds(60);
+
+    @Parameters(index = "0", paramLabel = "VIEWPOINTS.csv", description = "Viewpoints, one per row (UTF-8 CSV with a header line).")
+    Path viewpoints;
+    @Option(names = "--out-dir", required = true, paramLabel = "D", description = "Output folder (created if missing).")
+    Path outDir;
+    @Option(names = "--dem-dir", required = true, paramLabel = "DIR", description = "Directory of DEM tiles (.hgt, GeoTIFF); "
+            + "repeatable, in priority order, as for a single panorama.")
+    List<Path> demDirs;
+    @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}; column ppd).", defaultValue = "20")
+    double ppd;
+    @Option(names = "--range-km", description = "Range of sight, km (default: ${DEFAULT-VALUE}; column range_km).", defaultValue = "100")
+    double rangeKm;
+    @Option(names = "--offset-m", description = "Altitude correction added to the DEM height, metres (default: ${DEFAULT-VALUE}; column offset_m).", defaultValue = "0")
+    double offsetMetres;
+    @Option(names = "--eye-height-m", description = "Eye above the standing altitude, metres (default: ${DEFAULT-VALUE}; column eye_height_m).", defaultValue = "2")
+    double eyeHeightMetres;
+    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient k; 0 = off (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
+    double refraction;
+    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP|auto", description = "Elevation angles covered, degrees (default: ${DEFAULT-VALUE}).", defaultValue = "-30:30")
+    String elevationRange;
+    @Option(names = "--depth-mode", paramLabel = "MODE", description = "shader (default), reversed32f or standard24.", defaultValue = "shader")
+    String depthMode;
+    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, as for a single panorama.")
+    Set<String> layers;
+    @Option(names = "--pfm", description = "Write distance maps as .pfm instead of .npy.")
+    boolean pfm;
+    @Option(names = "--near-m", description = "Near plane, metres (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    double nearMetres;
+    @Option(names = "--supersampling", description = "View pixels per panorama pixel, linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    double supersampling;
+    @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
+    int views;
+    @Option(names = "--lod-px", paramLabel = "PX", description = "Level-of-detail screen error bound, pixels (default: ${DEFAULT-VALUE}).",
+            defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)
+    double lodErrorPx;
+    @Option(names = "--exact-distances", description = "Measure every pixel's distance along its own centre ray.")
+    boolean exactDistances;
+    @Option(names = "--no-colour", description = "Distances only.")
+    boolean noColour;
+    @Option(names = "--no-distance", description = "Colour only.")
+    boolean noDistance;
+    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent (default: ${DEFAULT-VALUE}); as for a single panorama.", defaultValue = "auto")
+    String missingTiles;
+    @Option(names = "--renderer", paramLabel = "opengl|reference", description = "opengl (default) or reference (CPU).", defaultValue = "opengl")
+    String renderer;
+    @Option(names = "--progress", description = "Show the progress bar even when the terminal is not detected (it is shown on a terminal anyway).")
+    boolean progress;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintStream err = System.err;
+        PanoramaRequest defaults = defaults();
+        boolean reference = Main.referenceRenderer(renderer);
+        ViewpointCsv.Parsed parsed;
+        try {
+            parsed = ViewpointCsv.read(viewpoints, defaults);
+        } catch (ViewpointCsvException e) {
+            err.println("dempano batch: " + e.getMessage());
+            return 1;
+        }
+        if (!parsed.ignoredColumns().isEmpty()) {
+            err.println("dempano batch: ignoring columns " + String.join(", ", parsed.ignoredColumns()) + " (read: "
+                    + String.join(", ", ViewpointCsv.COLUMNS) + ")");
+        }
+        List<DemDirectory> sources = new ArrayList<>();
+        for (Path d : demDirs) {
+            DemDirectory one = new DemDirectory(d); // a missing DEM folder: exit 1 before anything is created
+            one.warnings().forEach(w -> err.println("  warning: " + w));
+            sources.add(one);
+        }
+        DemSource dem = PriorityDem.of(sources);
+        try {
+            Files.createDirectories(outDir);
+        } catch (IOException e) {
+            err.println("dempano batch: cannot create the output folder " + outDir + ": " + IoMessages.reason(e));
+            return 1;
+        }
+        List<BatchRow> rows = parsed.rows();
+        err.printf(Locale.ROOT, "dempano batch: %d rows (%d valid) from %s, DEM %s, into %s%n", rows.size(),
+                parsed.validCount(), viewpoints, dem.describe(), outDir);
+        boolean bar = progress || System.console() != null;
+        // PNGs encoded through memory, not ImageIO's disk cache: its stream closer registers a shutdown
+        // hook on first use, which fails ("Shutdown in progress") when Ctrl-C comes before the first write.
+        javax.imageio.ImageIO.setUseCache(false);
+        BatchSummary summary;
+        java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+            BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(pfm, null,
+                    dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
+            Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");
+            Runtime.getRuntime().addShutdownHook(hook);
+            try {
+                summary = run.run();
+            } finally {
+                try {
+                    Runtime.getRuntime().removeShutdownHook(hook);
+                } catch (IllegalStateException e) {
+                    // shutting down: the hook is running
+                }
+            }
+        }
+        err.printf(Locale.ROOT, "dempano batch: %d ok, %d failed, %d not run of %d rows in %.1f s (%s s per panorama); "
+                        + "results in %s%n", summary.okCount(), summary.errorCount(), summary.notRun(), summary.rows(),
+                summary.seconds(), Double.isNaN(summary.secondsPerPanorama()) ? "-"
+                        : String.format(Locale.ROOT, "%.2f", summary.secondsPerPanorama()), BatchRenderer.resultsFile(outDir));
+        reported.countDown();
+        if (summary.fatal() != null) {
+            err.println("dempano batch: stopped: " + summary.fatal());
+            return 1;
+        }
+        if (summary.cancelled()) {
+            return EXIT_INTERRUPTED;
+        }
+        return summary.allOk() ? 0 : EXIT_SOME_ROWS_FAILED;
+    }
+
+    /** Ctrl-C: the row in progress finishes (files and results line), then the process ends. */
+    private static void interrupted(BatchRun run, java.util.concurrent.CountDownLatch reported, PrintStream err) {
+        run.cancel();
+        try {
+            if (run.awaitFinished(Duration.ZERO)) {
+                return;
+            }
+            err.println();
+            err.println("dempano batch: interrupted: finishing the row in progress (up to " + INTERRUPT_GRACE.toSeconds() + " s)");
+            if (!run.awaitFinished(INTERRUPT_GRACE)) {
+                err.println("dempano batch: the row in progress did not finish; its files are not in place");
+                return;
+            }
+            reported.await(2, java.util.concurrent.TimeUnit.SECONDS); // the summary line
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** The request every row starts from: the options. */
+    PanoramaRequest defaults() {
+        Set<Layer> wanted = EnumSet.noneOf(Layer.class);
+        if (layers != null) {
+            for (String s : layers) {
+                wanted.add(Layer.fromName(s.trim()));
+            }
+        }
+        // Checked here at (0, 0): a bad option is a bad argument (exit 2) before any row is read.
+        return PanoramaRequest.at(0, 0).withOffsetMetres(offsetMetres).withEyeHeightMetres(eyeHeightMetres)
+                .withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd).withElevationRange(ElevationRange.parse(elevationRange))
+                .withRefraction(new Refraction(refraction)).withDepthMode(DepthMode.fromOptionName(depthMode))
+                .withLayers(wanted).withNearMetres(nearMetres).withSupersampling(supersampling).withViews(views)
+                .withMissingTiles(Main.missingTilePolicy(missingTiles)).withLodErrorPx(lodErrorPx)
+                .withExactDistances(exactDistances).withColour(!noColour).withDistance(!noDistance);
+    }
+
+    /** One line per row (for logs and pipes). */
+    static final class Log implements BatchListener {
+        private final PrintStream err;
+        private int total;
+
+        Log(PrintStream err) {
+            this.err = err;
+        }
+
+        @Override
+        public void started(int rows) {
+            total = rows;
+        }
+
+        @Override
+        public void rowFinished(BatchResult r, int index) {
+            err.println(line(r, index, total));
+        }
+    }
+
+    static String line(BatchResult r, int index, int total) {
+        return r.ok()
+                ? String.format(Locale.ROOT, "dempano batch: [%d/%d] %s ok, %.2f s, %d files", index + 1, total, r.id(),
+                r.seconds(), r.files().size())
+                : String.format(Locale.ROOT, "dempano batch: [%d/%d] %s error: %s", index + 1, total, r.id(), r.error());
+    }
+
+    /** A progress bar with rate and ETA; bad rows get a line of their own above it. */
+    static final class Bar implements BatchListener {
+        private final PrintStream err;
+        private ProgressBar bar;
+        private int total;
+
+        Bar(PrintStream err) {
+            this.err = err;
+        }
+
+        @Override
+        public void started(int rows) {
+            total = rows;
+            bar = new ProgressBarBuilder().setTaskName("batch").setInitialMax(rows).setStyle(ProgressBarStyle.ASCII)
+                    .setUnit(" pano", 1).showSpeed(new DecimalFormat("0.00")).setUpdateIntervalMillis(500)
+                    .setConsumer(new ConsoleProgressBarConsumer(err)).build();
+        }
+
+        @Override
+        public void rowStarted(BatchRow row, int index) {
+            bar.setExtraMessage(row.id());
+        }
+
+        @Override
+        public void rowFinished(BatchResult r, int index) {
+            if (!r.ok()) {
+                synchronized (err) {
+                    err.print(System.console() != null ? "\r\033[2K" : "\n"); // off the bar's line
+                    err.println(line(r, index, total));
+                }
+            }
+            bar.step();
+        }
+
+        @Override
+        public void finished(BatchSummary summary) {
+            bar.close();
+        }
+    }
+}

@@ -1,0 +1,208 @@
+package dempano.batch;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.dem.DemDirectory;
+import dempano.dem.DemoTerrain;
+import dempano.io.PanoramaWriter;
+import dempano.panorama.ElevationRange;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.apache.commons.csv.CSVFormat;
+import org.apache.commons.csv.CSVParser;
+import org.apache.commons.csv.CSVRecord;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Batches through the API on the demo DEM (OpenGL, 4 px/°, 20 km, −10°…10°): the panoramas equal
+ * single renders bit for bit, a bad row is an error line and the rest go on, a cancelled run ends
+ * after the row in progress with complete sets only.
+ */
+class BatchRunTest {
+    static DemDirectory dem;
+
+    @BeforeAll
+    static void demoDem() throws IOException {
+        dem = new DemDirectory(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR));
+    }
+
+    static PanoramaRequest at(double lat, double lon) {
+        return PanoramaRequest.at(lat, lon).withPixelsPerDegree(4).withRangeMetres(20_000)
+                .withElevationRange(new ElevationRange(-10, 10, false));
+    }
+
+    /** A NumPy .npy float32 array's values (as FloatArrayWriter writes them: version 1, little-endian). */
+    static float[] npy(Path file) throws IOException {
+        ByteBuffer b = ByteBuffer.wrap(Files.readAllBytes(file)).order(ByteOrder.LITTLE_ENDIAN);
+        int headerLength = b.getShort(8) & 0xffff;
+        b.position(10 + headerLength);
+        float[] out = new float[b.remaining() / 4];
+        b.asFloatBuffer().get(out);
+        return out;
+    }
+
+    static List<CSVRecord> results(Path dir) throws IOException {
+        try (CSVParser p = CSVParser.parse(Files.readString(dir.resolve("results.csv"), StandardCharsets.UTF_8),
+                CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).get())) {
+            assertEquals(List.of("id", "status", "files", "seconds", "error"), p.getHeaderNames());
+            return p.getRecords();
+        }
+    }
+
+    static boolean stagingLeftovers(Path dir) throws IOException {
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.anyMatch(p -> p.getFileName().toString().startsWith("."));
+        }
+    }
+
+    @Test
+    void goodRowsEqualSingleRendersAndABadRowIsReportedWhileTheRestGoOn(@TempDir Path out) throws IOException {
+        double[] vp = DemoTerrain.viewpoint();
+        List<BatchRow> rows = List.of(
+                BatchRow.of("first", at(vp[0], vp[1])),
+                BatchRow.of("far", at(10.5, 10.5)), // no tile there: an error, the batch goes on
+                BatchRow.invalid(4, "bad", "line 4: latitude 'x' is not a decimal number"),
+                BatchRow.of("second", at(vp[0] + 0.03, vp[1] - 0.02).withEyeHeightMetres(30)),
+                BatchRow.of("../escape", at(vp[0], vp[1])),
+                BatchRow.of("FIRST", at(vp[0], vp[1])), // same files as "first" on a case-insensitive file system
+                BatchRow.of("third", at(vp[0] - 0.05, vp[1] + 0.04)));
+        List<String> events = new ArrayList<>();
+        BatchSummary s;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            s = new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT).render(rows, new BatchListener() {
+                @Override
+                public void started(int n) {
+                    events.add("started " + n);
+                }
+
+                @Override
+                public void rowFinished(BatchResult result, int index) {
+                    events.add(index + " " + result.id() + " " + result.status().word());
+                }
+            });
+        }
+        assertEquals(List.of("started 7", "0 first ok", "1 far error", "2 bad error", "3 second ok", "4 ../escape error",
+                "5 FIRST error", "6 third ok"), events);
+        assertEquals(3, s.okCount());
+        assertEquals(4, s.errorCount());
+        assertFalse(s.cancelled());
+        assertNull(s.fatal());
+
+        List<CSVRecord> csv = results(out);
+        assertEquals(List.of("first", "far", "bad", "second", "../escape", "FIRST", "third"),
+                csv.stream().map(c -> c.get("id")).toList());
+        assertEquals(List.of("ok", "error", "error", "ok", "error", "error", "ok"), csv.stream().map(c -> c.get("status")).toList());
+        assertEquals("first.png first-distance.npy first-distance.png first.json", csv.get(0).get("files"));
+        assertTrue(csv.get(1).get("error").startsWith("row 'far': no DEM data around 10.5, 10.5"), csv.get(1).get("error"));
+        assertEquals("line 4: latitude 'x' is not a decimal number", csv.get(2).get("error"));
+        assertTrue(csv.get(4).get("error").startsWith("row '../escape': unsafe id"), csv.get(4).get("error"));
+        assertEquals("row 'FIRST': duplicate id 'FIRST' (first at row 'first')", csv.get(5).get("error"));
+        assertTrue(Double.parseDouble(csv.get(0).get("seconds")) > 0);
+        assertEquals("", csv.get(0).get("error"));
+
+        // Only the good rows' sets are there, nothing escaped the folder, no staging leftovers.
+        try (Stream<Path> files = Files.list(out)) {
+            assertEquals(List.of("first-distance.npy", "first-distance.png", "first.json", "first.png", "results.csv",
+                    "second-distance.npy", "second-distance.png", "second.json", "second.png",
+                    "third-distance.npy", "third-distance.png", "third.json", "third.png"),
+                    files.map(p -> p.getFileName().toString()).sorted().toList());
+        }
+        assertFalse(Files.exists(out.getParent().resolve("escape.png")));
+
+        // Each good row equals the same request rendered alone by a fresh renderer, bit for bit.
+        for (int i : new int[] {0, 3, 6}) {
+            float[] alone;
+            try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+                alone = r.render(rows.get(i).request()).distanceArray();
+            }
+            float[] batch = npy(out.resolve(rows.get(i).id() + "-distance.npy"));
+            assertEquals(alone.length, batch.length);
+            int differing = 0, finite = 0;
+            for (int k = 0; k < alone.length; k++) {
+                differing += Float.floatToRawIntBits(alone[k]) != Float.floatToRawIntBits(batch[k]) ? 1 : 0;
+                finite += Float.isFinite(batch[k]) ? 1 : 0;
+            }
+            assertEquals(0, differing, rows.get(i).id() + ": distances differ in " + differing + " of " + alone.length + " pixels");
+            assertTrue(finite > alone.length / 4, "terrain in view");
+        }
+    }
+
+    @Test
+    void cancelStopsAfterTheRowInProgressWithCompleteSetsAndItsResultLine(@TempDir Path out) throws Exception {
+        double[] vp = DemoTerrain.viewpoint();
+        List<BatchRow> rows = new ArrayList<>();
+        for (int i = 0; i < 5; i++) {
+            rows.add(BatchRow.of("p" + i, at(vp[0] + 0.01 * i, vp[1])));
+        }
+        BatchRun[] run = new BatchRun[1];
+        List<String> finished = new ArrayList<>();
+        BatchSummary s;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            run[0] = new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT).newRun(rows, new BatchListener() {
+                @Override
+                public void rowStarted(BatchRow row, int index) {
+                    if (index == 1) {
+                        run[0].cancel(); // as Ctrl-C's shutdown hook does, while row 1 is being rendered
+                    }
+                }
+
+                @Override
+                public void rowFinished(BatchResult result, int index) {
+                    finished.add(result.id());
+                }
+            });
+            s = run[0].run();
+        }
+        assertTrue(run[0].awaitFinished(Duration.ZERO));
+        assertTrue(s.cancelled());
+        assertEquals(List.of("p0", "p1"), finished);
+        assertEquals(2, s.okCount());
+        assertEquals(3, s.notRun());
+        assertEquals(List.of("p0", "p1"), results(out).stream().map(c -> c.get("id")).toList());
+        assertEquals(List.of("ok", "ok"), results(out).stream().map(c -> c.get("status")).toList());
+        assertFalse(stagingLeftovers(out), "a staging folder was left");
+        for (String id : List.of("p0", "p1")) {
+            for (String suffix : List.of(".png", "-distance.npy", "-distance.png", ".json")) {
+                assertTrue(Files.size(out.resolve(id + suffix)) > 0, id + suffix);
+            }
+        }
+        try (Stream<Path> files = Files.list(out)) {
+            assertTrue(files.noneMatch(p -> p.getFileName().toString().startsWith("p2")), "row 2 was not started");
+        }
+    }
+
+    @Test
+    void aRowWhoseFileIsBlockedFailsAloneAndLeavesNoPartOfItsSet(@TempDir Path out) throws IOException {
+        double[] vp = DemoTerrain.viewpoint();
+        Files.createDirectory(out.resolve("blocked-distance.png")); // a folder in the way of one of its files
+        List<BatchRow> rows = List.of(BatchRow.of("blocked", at(vp[0], vp[1])), BatchRow.of("free", at(vp[0], vp[1])));
+        BatchSummary s;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            s = new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT).render(rows, null);
+        }
+        assertEquals(List.of("error", "ok"), s.results().stream().map(x -> x.status().word()).toList());
+        assertTrue(s.results().get(0).error().contains("blocked-distance.png: a folder of that name is in the way"),
+                s.results().get(0).error());
+        assertFalse(Files.exists(out.resolve("blocked.png")));
+        assertFalse(Files.exists(out.resolve("blocked.json")));
+        assertTrue(Files.exists(out.resolve("free.json")));
+        assertFalse(stagingLeftovers(out));
+        assertArrayEquals(new String[] {"blocked", "free"}, results(out).stream().map(c -> c.get("id")).toArray());
+    }
+}

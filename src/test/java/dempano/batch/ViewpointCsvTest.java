@@ -1,0 +1,174 @@
+package dempano.batch;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.PanoramaRequest;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** The viewpoint file: rows with their values or one-line reasons, and files that cannot be used at all. */
+class ViewpointCsvTest {
+    static final PanoramaRequest DEFAULTS = PanoramaRequest.at(0, 0).withRangeMetres(50_000).withPixelsPerDegree(10)
+            .withEyeHeightMetres(3).withOffsetMetres(1.5);
+
+    static ViewpointCsv.Parsed parse(String text) throws ViewpointCsvException {
+        return ViewpointCsv.parse("v.csv", text, DEFAULTS);
+    }
+
+    /**
+     * One data line under the header {@code id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd}:
+     * either valid (message "-") or invalid with the reason's start (after "line 2: ").
+     */
+    @ParameterizedTest(name = "[{index}] {0} → {1}")
+    @CsvSource(delimiter = '|', quoteCharacter = '`', value = {
+            // data line                                  | reason (or - for a valid row)
+            "a,46.5,8.1,,,,,                              | -",
+            "a,-90,-180,,,,,                              | -",
+            "a,+1.5e1,.5,,,,,                             | -",
+            "a,NaN,8,,,,,                                 | latitude 'NaN' is not a decimal number",
+            "a,46,Infinity,,,,,                           | longitude 'Infinity' is not a decimal number",
+            "a,91,8,,,,,                                  | latitude must be in [-90, 90] degrees, got 91.0",
+            "a,46,180.5,,,,,                              | longitude must be in",
+            "a,1e999,8,,,,,                               | latitude '1e999' is out of range",
+            "a,0x10,8,,,,,                                | latitude '0x10' is not a decimal number",
+            "a,46.5d,8,,,,,                               | latitude '46.5d' is not a decimal number",
+            "a,\"46,5\",8,,,,,                            | latitude '46,5' is not a decimal number",
+            "a,46 N,8,,,,,                                | latitude '46 N' is not a decimal number",
+            "a,,8,,,,,                                    | latitude is empty",
+            "a,46,8,abc,,,,                               | altitude 'abc' is not a decimal number",
+            "a,46,8,,12m,,,                               | offset '12m' is not a decimal number",
+            "a,46,8,,,-1,,                                | eye height must be ≥ 0 metres",
+            "a,46,8,,,,0.01,                              | range must be between 0.1 and",
+            "a,46,8,,,,,0                                 | pixels per degree",
+            "a,46,8,,,,,1000                              | pixels per degree",
+            "a,46,8,,,,                                   | 7 fields, the header has 8",
+            "a,46,8,,,,,,                                 | 9 fields, the header has 8",
+            "../x,46,8,,,,,                               | unsafe id '../x'",
+            "a/b,46,8,,,,,                                | unsafe id 'a/b'",
+            ".hidden,46,8,,,,,                            | unsafe id '.hidden'",
+            "..,46,8,,,,,                                 | unsafe id '..'",
+            "a.,46,8,,,,,                                 | unsafe id 'a.'",
+            "\"a b\",46,8,,,,,                            | unsafe id 'a b'",
+            "\"a\tb\",46,8,,,,,                           | unsafe id 'a?b'",
+            "Zürich,46,8,,,,,                             | unsafe id 'Zürich'",
+            ",46,8,,,,,                                   | the id is empty",
+    })
+    void oneRow(String line, String reason) throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd\n" + line + "\n").rows();
+        assertEquals(1, rows.size());
+        BatchRow r = rows.get(0);
+        assertEquals(2, r.lineNumber());
+        if (reason.equals("-")) {
+            assertTrue(r.valid(), () -> "expected valid, got: " + r.error());
+        } else {
+            assertFalse(r.valid(), "expected an error starting with: " + reason);
+            assertTrue(r.error().startsWith("line 2: " + reason), () -> "got: " + r.error());
+            assertFalse(r.error().contains("\n"), "one line");
+        }
+    }
+
+    @Test
+    void optionalColumnsOverrideTheDefaultsAndEmptyCellsKeepThem() throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd\n"
+                + "full,46.5,8.25,3000,-2,10,20,4\n"
+                + "empty,46.5,8.25,,,,,\n").rows();
+        PanoramaRequest full = rows.get(0).request(), empty = rows.get(1).request();
+        assertEquals(46.5, full.latDeg());
+        assertEquals(8.25, full.lonDeg());
+        assertEquals(3000, full.altitudeMetres());
+        assertEquals(-2, full.offsetMetres());
+        assertEquals(10, full.eyeHeightMetres());
+        assertEquals(20_000, full.rangeMetres());
+        assertEquals(4, full.pixelsPerDegree());
+        assertTrue(Double.isNaN(empty.altitudeMetres()));
+        assertEquals(DEFAULTS.offsetMetres(), empty.offsetMetres());
+        assertEquals(DEFAULTS.eyeHeightMetres(), empty.eyeHeightMetres());
+        assertEquals(DEFAULTS.rangeMetres(), empty.rangeMetres());
+        assertEquals(DEFAULTS.pixelsPerDegree(), empty.pixelsPerDegree());
+        // Everything else is the defaults' own.
+        assertEquals(DEFAULTS.withOffsetMetres(0), ViewpointCsv.atViewpoint(DEFAULTS, 0, 0).withOffsetMetres(0));
+    }
+
+    @Test
+    void bomCrlfBlankLinesHeaderCaseAndColumnOrder() throws ViewpointCsvException {
+        ViewpointCsv.Parsed p = parse("\uFEFF Lon , ID ,Name,LAT\r\n8.1,a,Alpha,46.1\r\n\r\n   \r\n8.2,b,\"Beta,\r\nsecond line\",46.2\r\n8.3,c,Gamma,46.3");
+        assertEquals(List.of("Name"), p.ignoredColumns());
+        assertEquals(3, p.rows().size());
+        assertEquals(List.of("a", "b", "c"), p.rows().stream().map(BatchRow::id).toList());
+        assertEquals(List.of(2, 5, 7), p.rows().stream().map(BatchRow::lineNumber).toList());
+        assertEquals(46.3, p.rows().get(2).request().latDeg());
+        assertEquals(8.2, p.rows().get(1).request().lonDeg());
+        assertTrue(p.rows().stream().allMatch(BatchRow::valid));
+    }
+
+    @Test
+    void duplicateIdsAreErrorsWithoutRegardToCaseAndTheFirstStays() throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,lat,lon\na,1,1\nb,2,2\nA,3,3\na,4,4\n").rows();
+        assertTrue(rows.get(0).valid());
+        assertTrue(rows.get(1).valid());
+        assertEquals("line 4: duplicate id 'A' (first on line 2)", rows.get(2).error());
+        assertEquals("line 5: duplicate id 'a' (first on line 2)", rows.get(3).error());
+    }
+
+    @Test
+    void aBadRowDoesNotAffectTheNext() throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,lat,lon\nx,abc,1\ny,2,2\n").rows();
+        assertFalse(rows.get(0).valid());
+        assertTrue(rows.get(1).valid());
+        assertNull(rows.get(1).error());
+    }
+
+    /** Files that cannot be used at all: one line naming the file and the problem. */
+    @ParameterizedTest(name = "[{index}] {1}")
+    @CsvSource(delimiter = '|', quoteCharacter = '`', value = {
+            "                              | v.csv: empty: want a header line naming the columns id,lat,lon",
+            "\uFEFF                        | v.csv: empty",
+            "id,lat\\na,1                   | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon)",
+            "lat,lon\\n1,2                  | v.csv: line 1: the header has no column 'id'",
+            "id,lat,lon,LAT\\na,1,2,3       | v.csv: line 1: the header names column 'lat' twice",
+            "id,lat,lon\\na,1,2\\n\"b,3,4\\n  | v.csv: broken CSV after line",
+    })
+    void unusableFiles(String text, String message) {
+        ViewpointCsvException e = assertThrows(ViewpointCsvException.class,
+                () -> parse(text == null ? "" : text.replace("\\n", "\n")));
+        assertTrue(e.getMessage().startsWith(message), () -> "got: " + e.getMessage());
+        assertFalse(e.getMessage().contains("\n"), "one line");
+    }
+
+    @Test
+    void unreadableAndNonUtf8Files(@TempDir Path dir) throws IOException {
+        ViewpointCsvException missing = assertThrows(ViewpointCsvException.class,
+                () -> ViewpointCsv.read(dir.resolve("nope.csv"), DEFAULTS));
+        assertTrue(missing.getMessage().startsWith("cannot read the viewpoint file " + dir.resolve("nope.csv")),
+                missing.getMessage());
+        Path latin1 = Files.write(dir.resolve("latin1.csv"), "id,lat,lon\nZ\u00fcrich,47,8\n".getBytes(StandardCharsets.ISO_8859_1));
+        ViewpointCsvException notUtf8 = assertThrows(ViewpointCsvException.class, () -> ViewpointCsv.read(latin1, DEFAULTS));
+        assertEquals(latin1 + ": not UTF-8 text", notUtf8.getMessage());
+        Path folder = Files.createDirectory(dir.resolve("folder.csv"));
+        assertThrows(ViewpointCsvException.class, () -> ViewpointCsv.read(folder, DEFAULTS));
+        Path ok = Files.writeString(dir.resolve("ok.csv"), "id,lat,lon\na,47,8\n");
+        assertEquals(1, ViewpointCsv.read(ok, DEFAULTS).validCount());
+    }
+
+    @Test
+    void idRules() {
+        for (String good : List.of("a", "A1", "0", "summit_01", "x-y.z", "a".repeat(BatchIds.MAX_LENGTH))) {
+            assertNull(BatchIds.problem(good), good);
+        }
+        for (String bad : List.of("", "..", ".", "./a", "a/b", "a\\b", "-a", "_a", "a b", "a.", "a".repeat(101), "a\u0000b", "é")) {
+            assertTrue(BatchIds.problem(bad) != null, () -> "accepted: " + bad);
+        }
+        assertEquals(BatchIds.collisionKey("Abc"), BatchIds.collisionKey("aBC"));
+    }
+}

@@ -1,0 +1,153 @@
+package dempano.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.dem.DemoTerrain;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** {@code dempano batch} from the command line: exit codes, one line per problem, results.csv, same files as single runs. */
+class BatchCommandTest {
+    static final List<String> SMALL = List.of("--ppd", "4", "--range-km", "20", "--elevation-range", "-10:10");
+    static Path demo;
+    static double[] vp;
+
+    @BeforeAll
+    static void demoDem() throws IOException {
+        demo = DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR);
+        vp = DemoTerrain.viewpoint();
+    }
+
+    static String[] batch(Path csv, Path out, String... more) {
+        List<String> a = new ArrayList<>(List.of("batch", csv.toString(), "--out-dir", out.toString(), "--dem-dir", demo.toString()));
+        for (int i = 0; i < SMALL.size(); i += 2) { // SMALL's settings unless given
+            if (!List.of(more).contains(SMALL.get(i))) {
+                a.addAll(SMALL.subList(i, i + 2));
+            }
+        }
+        a.addAll(List.of(more));
+        return MainTest.run(a.toArray(new String[0]));
+    }
+
+    static String coordinate(double v) {
+        return String.format(Locale.ROOT, "%.6f", v);
+    }
+
+    @Test
+    void oneBadRowIsReportedInOneLineTheRestAreDoneAndEqualSingleRuns(@TempDir Path d) throws IOException {
+        String lat = coordinate(vp[0]), lon = coordinate(vp[1]);
+        Path csv = Files.writeString(d.resolve("v.csv"), "id,lat,lon,eye_height_m,note\n"
+                + "here," + lat + "," + lon + ",,start\n"
+                + "bad," + lat + ",abc,,typo\n"
+                + "north," + coordinate(vp[0] + 0.04) + "," + lon + ",20,\n"
+                + "south," + coordinate(vp[0] - 0.04) + "," + lon + ",,\n");
+        Path out = d.resolve("out/new"); // created
+        String[] r = batch(csv, out);
+        assertEquals("3", r[0], r[1]);
+        List<String> errorLines = r[1].lines().filter(l -> l.contains(" error: ")).toList();
+        assertEquals(List.of("dempano batch: [2/4] bad error: line 3: longitude 'abc' is not a decimal number"), errorLines);
+        assertFalse(r[1].contains("Exception"), r[1]);
+        assertTrue(r[1].contains("ignoring columns note"), r[1]);
+        assertTrue(r[1].contains("3 ok, 1 failed, 0 not run of 4 rows"), r[1]);
+        List<String> results = Files.readAllLines(out.resolve("results.csv"));
+        assertEquals("id,status,files,seconds,error", results.get(0));
+        assertTrue(results.get(1).startsWith("here,ok,here.png here-distance.npy here-distance.png here.json,"), results.get(1));
+        assertEquals("bad,error,,0.000,line 3: longitude 'abc' is not a decimal number", results.get(2));
+        assertTrue(results.get(3).startsWith("north,ok,"), results.get(3));
+        assertTrue(results.get(4).startsWith("south,ok,"), results.get(4));
+        assertEquals(5, results.size());
+
+        // The same viewpoint rendered by the single-panorama command: the same distance file, byte for byte.
+        List<String> single = new ArrayList<>(List.of("--lat", coordinate(vp[0] + 0.04), "--lon", lon, "--eye-height-m", "20",
+                "--dem-dir", demo.toString(), "--out", d.resolve("single").toString()));
+        single.addAll(SMALL);
+        String[] s = MainTest.run(single.toArray(new String[0]));
+        assertEquals("0", s[0], s[1]);
+        assertArrayEquals(Files.readAllBytes(d.resolve("single-distance.npy")), Files.readAllBytes(out.resolve("north-distance.npy")));
+    }
+
+    @Test
+    void allRowsDoneIsExitZeroAndProgressShowsRateAndEta(@TempDir Path d) throws IOException {
+        Path csv = Files.writeString(d.resolve("v.csv"), "id,lat,lon\na," + coordinate(vp[0]) + "," + coordinate(vp[1])
+                + "\nb," + coordinate(vp[0] + 0.01) + "," + coordinate(vp[1]) + "\n");
+        String[] r = batch(csv, d, "--renderer", "reference", "--ppd", "2", "--progress");
+        assertEquals("0", r[0], r[1]);
+        assertTrue(r[1].contains("2/2 pano"), r[1]);
+        assertTrue(r[1].contains("pano/s"), r[1]);
+        assertTrue(Files.exists(d.resolve("b.json")));
+        assertEquals(3, Files.readAllLines(d.resolve("results.csv")).size());
+    }
+
+    /** Unusable input: exit 1 (2 for bad arguments) and one line saying what is wrong, no stack trace, nothing rendered. */
+    @ParameterizedTest(name = "[{index}] {2}")
+    @CsvSource(delimiter = '|', value = {
+            // CSV text (or - for no file) | exit | message
+            "id,lat\\na,1                  | 1    | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon)",
+            "                               | 1    | v.csv: empty: want a header line naming the columns id,lat,lon",
+            "-                              | 1    | cannot read the viewpoint file",
+            "id,lat,lon\\na,\"1,2\\n       | 1    | v.csv: broken CSV after line 2",
+    })
+    void unusableViewpointFiles(String text, int exit, String message, @TempDir Path d) throws IOException {
+        Path csv = d.resolve("v.csv");
+        if (!"-".equals(text)) {
+            Files.writeString(csv, text == null ? "" : text.replace("\\n", "\n"));
+        }
+        String[] r = batch(csv, d.resolve("out"));
+        assertEquals(Integer.toString(exit), r[0], r[1]);
+        List<String> lines = r[1].lines().toList();
+        assertEquals(1, lines.size(), r[1]);
+        assertTrue(lines.get(0).startsWith("dempano batch: ") && lines.get(0).contains(message), r[1]);
+        assertFalse(Files.exists(d.resolve("out")), "nothing created");
+    }
+
+    @Test
+    void aMissingDemFolderOrAnOutputFolderThatIsAFileIsExitOne(@TempDir Path d) throws IOException {
+        Path csv = Files.writeString(d.resolve("v.csv"), "id,lat,lon\na,0.1,0.1\n");
+        String[] r = MainTest.run("batch", csv.toString(), "--out-dir", d.resolve("out").toString(), "--dem-dir",
+                d.resolve("no-such-dem").toString());
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains("no-such-dem"), r[1]);
+        assertFalse(r[1].contains("\tat "), r[1]);
+        assertFalse(Files.exists(d.resolve("out")), "nothing created");
+        Path file = Files.writeString(d.resolve("file"), "x");
+        r = batch(csv, file);
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains("dempano batch: cannot create the output folder " + file), r[1]);
+    }
+
+    @ParameterizedTest(name = "[{index}] {0}")
+    @CsvSource(delimiter = '|', value = {
+            "--ppd -3                 | pixels per degree",
+            "--range-km 0             | range must be",
+            "--missing-tiles maybe    | --missing-tiles must be auto, sea or error",
+            "--renderer vulkan        | --renderer must be opengl or reference",
+    })
+    void badOptionsAreExitTwo(String option, String message, @TempDir Path d) throws IOException {
+        Path csv = Files.writeString(d.resolve("v.csv"), "id,lat,lon\na,0.1,0.1\n");
+        String[] r = batch(csv, d.resolve("out"), option.trim().split(" "));
+        assertEquals("2", r[0], r[1]);
+        assertTrue(r[1].contains(message), r[1]);
+        assertFalse(r[1].contains("\tat "), r[1]);
+    }
+
+    @Test
+    void missingArgumentsAreExitTwo(@TempDir Path d) {
+        String[] r = MainTest.run("batch", d.resolve("v.csv").toString());
+        assertEquals("2", r[0], r[1]);
+        assertTrue(r[1].contains("--out-dir"), r[1]);
+        assertTrue(Arrays.asList(r[1].split("\n")).size() <= 3, r[1]);
+    }
+}
