@@ -98,7 +98,8 @@ public final class BatchCommand implements Callable<Integer> {
     @Option(names = "--lod-px", paramLabel = "PX", description = "Level-of-detail screen error bound, pixels (default: ${DEFAULT-VALUE}).",
             defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)
     double lodErrorPx;
-    @Option(names = "--exact-distances", description = "Measure every pixel's distance along its own centre ray.")
+    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "Measure every pixel's distance along its own centre ray (default). --no-exact-distances interpolates the views' depth: faster, tens of per cent off at grazing incidence.")
     boolean exactDistances;
     @Option(names = "--no-colour", description = "Distances only.")
     boolean noColour;
