@@ -73,6 +73,13 @@ public final class LocalFrame {
         out[2] = originEcef[2] + ez * e + nz * n + uz * u;
     }
 
+    /** A direction (or any vector) from ENU to ECEF axes: the rotation alone. */
+    public void enuDirectionToEcef(double e, double n, double u, double[] out) {
+        out[0] = ex * e + nx * n + ux * u;
+        out[1] = ey * e + ny * n + uy * u;
+        out[2] = ez * e + nz * n + uz * u;
+    }
+
     /** ENU (metres) to geodetic: {latDeg, lonDeg, heightMetres}. */
     public double[] toGeodetic(double e, double n, double u) {
         double[] ecef = new double[3];

@@ -9,17 +9,15 @@ package dempano.panorama;
 public interface RayProbe {
     /**
      * The distance along a unit ray from the eye to where it first goes below the terrain, searched
-     * outward from {@code fromMetres} to {@code toMetres}.
+     * outward from {@code fromMetres} to {@code toMetres}, without stepping over a crest: a
+     * crest behind a nearer one is where the candidates most often fail.
      *
      * @param dx         ray direction, unit length, in the eye's frame (jME axes: east, up, south)
      * @param fromMetres a distance at which the ray is expected above the terrain (searched from
      *                   nearer the eye when it is not)
      * @param toMetres   how far to search
-     * @param fine       steps of at most a DEM cell, so that only a crest the ray crosses over less
-     *                   than a cell can be stepped over: slower, for rays beside the sky, where
-     *                   stepping over a crest moves the skyline
      * @return the distance, metres; +∞ when the ray stays above the terrain out to the range of sight
      *         (or leaves the DEM); NaN when it stays above out to {@code toMetres} only (undecided)
      */
-    double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres, boolean fine);
+    double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres);
 }

@@ -170,7 +170,7 @@ public final class Stitcher {
                     if (!Double.isNaN(r)) {
                         rowExact++;
                     } else if (probe != null
-                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500, hint[0] > 0))
+                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500))
                             && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
                         rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
                     } else if (hint[0] > 0) {

@@ -12,16 +12,37 @@ import dempano.terrain.Triangulation;
 /**
  * A ray's first crossing with the full-resolution triangulated surface (the surface the CPU
  * reference draws: mosaic cells split by {@link Triangulation}, NaN samples at sea level, refraction
- * lift k·d²/2R, cut at the range of sight), found by search: outward in steps of
- * {@link #STEP_RATIO} until the ray is below the surface, then regula falsi (Illinois) to
- * {@link #TOLERANCE} (relative). A crest rising above the ray for less than one step can be stepped
- * over; fine probes cap the step at one DEM cell, so that the ray must cross a crest over less than a cell to miss it. Stateless after construction: thread-safe.
+ * lift k·d²/2R, cut at the range of sight), found by a crest-safe search, then regula falsi
+ * (Illinois) to {@link #TOLERANCE} (relative).
+ * <p>
+ * The search crosses a stretch of the ray in one step only where a maximum pyramid of the DEM
+ * (blocks of {@link #BLOCK_CELLS} cells, then single cells) proves the ray above every sample it
+ * can pass over. Where it cannot, it computes the ray where it crosses the triangulation's edges:
+ * the clearance is nearly linear between them, so its minima (crests) are computed, not stepped
+ * over. The pyramid's blocks are filled on first use and belong to this probe, made for one mosaic
+ * and one render: nothing outlives it. Thread-safe.
  */
 public final class TerrainRayProbe implements RayProbe {
-    /** Outward steps multiply the distance by this. */
-    static final double STEP_RATIO = 1.1;
+    /** Near the eye, where a cell is a large part of the distance, steps are at most this times the distance. */
+    static final double NEAR_STEP_RATIO = 0.1;
     /** Bisection stops when the bracket is this narrow, relative to the distance. */
     static final double TOLERANCE = 1e-9;
+    /** Cells per block side of the maximum pyramid's levels, finest first (each a multiple of the one before). */
+    private static final int[] BLOCK_CELLS = {4, 16, 64};
+    private static final int LEVELS = BLOCK_CELLS.length;
+    /**
+     * Horizontal metres from an anchor (an exactly computed ray point) over which the ray's path in
+     * grid rows and columns is extrapolated linearly. Over 2 km the path bends by under 0.3 m at
+     * 45°, 1.8 m at 80° (the change of azimuth along a geodesic); the margin allows a cell.
+     */
+    private static final double ANCHOR_SPAN_METRES = 2000;
+    /** Margin of the extrapolated path, cells: this, plus (distance from the anchor / ANCHOR_SPAN_METRES)². */
+    private static final double PATH_MARGIN_CELLS = 0.05;
+    /** Height margin of the pyramid tests, metres (the closed-form geodetic height is good to 1e-7 m). */
+    private static final double HEIGHT_MARGIN_METRES = 1e-3;
+    /** A ray point: where it is, and how it moves there (per metre along the ray). */
+    private static final int LAT = 0, LON = 1, HEIGHT = 2, LIFT = 3, GROUND = 4, RISE = 5, ROW = 6, COL = 7,
+            ROW_RATE = 8, COL_RATE = 9, POINT = 10;
     /** e'² = (a² − b²) / b². */
     private static final double SECOND_ECCENTRICITY_SQ = Ellipsoid.E2 / ((1 - Ellipsoid.F) * (1 - Ellipsoid.F));
 
@@ -30,8 +51,11 @@ public final class TerrainRayProbe implements RayProbe {
     private final Refraction refraction;
     private final double rangeMetres;
     private final double[] eyeFoot = new double[3];
-    /** Fine steps' horizontal length: one of the mosaic's cells, the narrower (east–west) way. */
-    private final double fineStepMetres;
+    /** Cell steps' horizontal length: one of the mosaic's cells, the narrower (east–west) way. */
+    private final double cellStepMetres;
+    /** Per level: block rows and columns, and each block's highest sample (NaN until first asked). */
+    private final int[] blockRows = new int[LEVELS], blockCols = new int[LEVELS];
+    private final float[][] blockMaxima = new float[LEVELS][];
 
     public TerrainRayProbe(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres) {
         this.mosaic = mosaic;
@@ -40,44 +64,42 @@ public final class TerrainRayProbe implements RayProbe {
         this.rangeMetres = rangeMetres;
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
         double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree();
-        this.fineStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
+        this.cellStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
+        for (int level = 0; level < LEVELS; level++) {
+            blockRows[level] = (mosaic.rows() - 1) / BLOCK_CELLS[level] + 1;
+            blockCols[level] = (mosaic.cols() - 1) / BLOCK_CELLS[level] + 1;
+            blockMaxima[level] = new float[blockRows[level] * blockCols[level]];
+            java.util.Arrays.fill(blockMaxima[level], Float.NaN);
+        }
     }
 
     @Override
-    public double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres, boolean fine) {
+    public double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres) {
         double e = dx, n = -dz, u = dy; // jME axes (east, up, south) to ENU
         double horizontal = Math.hypot(e, n), horizontalShare = Math.max(horizontal, 0.01);
         double tMax = Math.min(toMetres, horizontal > 0 ? rangeMetres / horizontal : Double.POSITIVE_INFINITY);
         double a = Math.max(1e-3, Math.min(fromMetres, tMax));
-        double ca = clearance(e, n, u, a);
-        while (a > 1e-3 && !(ca > 0)) {
+        double[] pa = new double[POINT], pb = new double[POINT];
+        double start = clearance(e, n, u, a, pa);
+        while (a > 1e-3 && !(start > 0)) {
             a /= 4; // not above there: back toward the eye, which is above the terrain
-            ca = clearance(e, n, u, a);
+            start = clearance(e, n, u, a, pa);
         }
-        if (!(ca > 0)) {
+        if (!(start > 0)) {
             return Double.NaN;
         }
-        double b = a, cb;
-        while (true) {
-            b = Math.min(fine ? Math.min(b * STEP_RATIO, b + fineStepMetres / horizontalShare) : b * STEP_RATIO, tMax);
-            cb = clearance(e, n, u, b);
-            if (Double.isNaN(cb)) {
-                return Double.POSITIVE_INFINITY; // off the mosaic: nothing drawn there
-            }
-            if (cb <= 0) {
-                break;
-            }
-            if (b >= tMax) {
-                return b >= rangeMetres / Math.max(horizontal, 1e-300) ? Double.POSITIVE_INFINITY : Double.NaN;
-            }
-            a = b;
-            ca = cb;
+        double[] bracket = crestSafeBracket(e, n, u, a, tMax, horizontalShare, pa, pb);
+        if (bracket.length == 1) {
+            // Nothing met up to the end: out to the range of sight (or off the mosaic) that is +∞, short of it undecided.
+            return bracket[0] >= rangeMetres / Math.max(horizontal, 1e-300) ? Double.POSITIVE_INFINITY : Double.NaN;
         }
+        a = bracket[0];
+        double ca = bracket[1], b = bracket[2], cb = bracket[3];
         // Illinois regula falsi: the clearance is close to linear along the ray within a triangle.
         int side = 0;
         for (int i = 0; i < 100 && b - a > TOLERANCE * b; i++) {
             double m = Math.max(a, Math.min(b, (a * cb - b * ca) / (cb - ca)));
-            double cm = clearance(e, n, u, m);
+            double cm = clearance(e, n, u, m, pb);
             if (Double.isNaN(cm) || cm == 0) {
                 return m;
             }
@@ -100,14 +122,212 @@ public final class TerrainRayProbe implements RayProbe {
         return 0.5 * (a + b);
     }
 
+    /**
+     * The crest-safe search from a point above the surface: {a, clearance(a), b, clearance(b)} with
+     * the first crossing between a and b; or {t} when there is none before t: t = tMax (nothing
+     * met; +∞ or undecided by the caller's rule), or +∞ (the ray left the mosaic).
+     * <p>
+     * From an anchor (a point computed exactly, with its height's rate of change and its rows' and
+     * columns' rates) a stretch of the ray is crossed without computing it when a pyramid level
+     * proves it above every sample it can pass over: its height is at least the anchor's tangent
+     * line (the height above a convex ellipsoid is convex along a straight line), its lift at most
+     * that of its far end, its cells within the linear extrapolation's rectangle widened by a margin.
+     * Where even single cells may reach the ray, the ray is computed where it crosses the cell edges
+     * and diagonals of the triangulation: between them the clearance is nearly linear, so a crest
+     * (a minimum of the clearance, on an edge) is not stepped over.
+     */
+    private double[] crestSafeBracket(double e, double n, double u, double a, double tMax, double horizontalShare,
+                                      double[] anchor, double[] scratch) {
+        double anchorT = a, t = a, ct = clearance(e, n, u, a, anchor);
+        int level = LEVELS - 1;
+        double[] crossings = new double[16];
+        while (true) {
+            if (t >= tMax) {
+                return new double[] {tMax};
+            }
+            if ((t - anchorT) * horizontalShare >= ANCHOR_SPAN_METRES) {
+                double c = clearance(e, n, u, t, anchor);
+                if (Double.isNaN(c)) {
+                    return new double[] {Double.POSITIVE_INFINITY};
+                }
+                if (!(c > 0)) { // proven above up to here: only rounding can put it under
+                    return new double[] {t - 1e-6 * t, ct, t, c};
+                }
+                anchorT = t;
+                ct = c;
+            }
+            if (level >= 0) {
+                double t1 = Math.min(t + BLOCK_CELLS[level] * cellStepMetres / horizontalShare, tMax);
+                if (above(level, anchor, anchorT, t, t1, horizontalShare)) {
+                    t = t1;
+                    level = Math.min(level + 1, LEVELS - 1);
+                } else {
+                    level--;
+                }
+                continue;
+            }
+            // One cell or less (near the eye, a tenth of the distance), tested cell by cell.
+            double t1 = Math.min(t + Math.min(NEAR_STEP_RATIO * t, cellStepMetres / horizontalShare), tMax);
+            if (above(-1, anchor, anchorT, t, t1, horizontalShare)) {
+                t = t1;
+                level = 0;
+                continue;
+            }
+            int count = edgeCrossings(anchor, anchorT, t, t1, crossings);
+            double previous = t, cPrevious = ct;
+            if (previous != anchorT) {
+                cPrevious = clearance(e, n, u, previous, scratch);
+            }
+            for (int i = 0; i <= count; i++) {
+                double tc = i < count ? crossings[i] : t1;
+                double c = clearance(e, n, u, tc, scratch);
+                if (Double.isNaN(c)) {
+                    return new double[] {Double.POSITIVE_INFINITY}; // off the mosaic: nothing drawn there
+                }
+                if (c <= 0) {
+                    return new double[] {previous, cPrevious, tc, c};
+                }
+                previous = tc;
+                cPrevious = c;
+            }
+            // Above at the cell's far end: a new anchor there, computed anyway.
+            System.arraycopy(scratch, 0, anchor, 0, POINT);
+            anchorT = t1;
+            ct = cPrevious;
+            t = t1;
+            level = 0;
+        }
+    }
+
+    /**
+     * Whether the ray between t0 and t1 (metres, anchor ≤ t0 < t1) is provably above every sample of
+     * the level's blocks it can pass over (level −1: single cells), lifted by refraction.
+     */
+    private boolean above(int level, double[] anchor, double anchorT, double t0, double t1, double horizontalShare) {
+        double lowest = anchor[HEIGHT] + Math.min(anchor[RISE] * (t0 - anchorT), anchor[RISE] * (t1 - anchorT)) - HEIGHT_MARGIN_METRES;
+        double reach = (t1 - anchorT) * horizontalShare;
+        double lift = Math.max(anchor[LIFT], refraction.liftMetres(anchor[GROUND] + reach));
+        double margin = PATH_MARGIN_CELLS + (reach / ANCHOR_SPAN_METRES) * (reach / ANCHOR_SPAN_METRES);
+        double row0 = anchor[ROW] + anchor[ROW_RATE] * (t0 - anchorT), row1 = anchor[ROW] + anchor[ROW_RATE] * (t1 - anchorT);
+        double col0 = anchor[COL] + anchor[COL_RATE] * (t0 - anchorT), col1 = anchor[COL] + anchor[COL_RATE] * (t1 - anchorT);
+        int r0 = (int) Math.floor(Math.min(row0, row1) - margin), r1 = (int) Math.floor(Math.max(row0, row1) + margin) + 1;
+        int c0 = (int) Math.floor(Math.min(col0, col1) - margin), c1 = (int) Math.floor(Math.max(col0, col1) + margin) + 1;
+        if (r0 < 0 || c0 < 0 || r1 >= mosaic.rows() || c1 >= mosaic.cols()) {
+            return false; // may leave the mosaic: decided by computing the ray
+        }
+        double ceiling = lowest - lift;
+        if (level < 0) {
+            for (int r = r0; r <= r1; r++) {
+                for (int c = c0; c <= c1; c++) {
+                    if (height(r, c) >= ceiling) {
+                        return false;
+                    }
+                }
+            }
+            return true;
+        }
+        int cells = BLOCK_CELLS[level];
+        for (int br = r0 / cells; br <= r1 / cells; br++) {
+            for (int bc = c0 / cells; bc <= c1 / cells; bc++) {
+                if (blockMaximum(level, br, bc) >= ceiling) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Where the extrapolated path between t0 and t1 crosses a grid line or a cell's diagonal, in
+     * increasing order; returns how many (at most {@code out.length}).
+     */
+    private static int edgeCrossings(double[] anchor, double anchorT, double t0, double t1, double[] out) {
+        double rowRate = anchor[ROW_RATE], colRate = anchor[COL_RATE];
+        double row0 = anchor[ROW] + rowRate * (t0 - anchorT), col0 = anchor[COL] + colRate * (t0 - anchorT);
+        double row1 = anchor[ROW] + rowRate * (t1 - anchorT), col1 = anchor[COL] + colRate * (t1 - anchorT);
+        int count = 0;
+        for (int k = (int) Math.floor(Math.min(row0, row1)) + 1; k <= Math.max(row0, row1) && count < out.length / 2; k++) {
+            out[count++] = t0 + (k - row0) / rowRate;
+        }
+        for (int k = (int) Math.floor(Math.min(col0, col1)) + 1; k <= Math.max(col0, col1) && count < out.length / 2; k++) {
+            out[count++] = t0 + (k - col0) / colRate;
+        }
+        java.util.Arrays.sort(out, 0, count);
+        // Each piece between grid crossings lies in one cell: where does it cross that cell's diagonal?
+        int pieces = count + 1;
+        for (int i = 0; i < pieces && count < out.length; i++) {
+            double ta = i == 0 ? t0 : out[i - 1], tb = i < pieces - 1 ? out[i] : t1;
+            double tm = 0.5 * (ta + tb);
+            double rm = row0 + rowRate * (tm - t0), cm = col0 + colRate * (tm - t0);
+            int r = (int) Math.floor(rm), c = (int) Math.floor(cm);
+            double td;
+            if (Triangulation.splitsNorthWestToSouthEast(r, c)) { // v = w: row − col = r − c
+                td = t0 + ((r - c) - (row0 - col0)) / (rowRate - colRate);
+            } else { // v + w = 1: row + col = r + c + 1
+                td = t0 + ((r + c + 1) - (row0 + col0)) / (rowRate + colRate);
+            }
+            if (td > ta && td < tb) {
+                out[count++] = td;
+            }
+        }
+        java.util.Arrays.sort(out, 0, count);
+        return count;
+    }
+
+    /**
+     * Highest sample of block (br, bc) of a level, border samples included (NaN samples count as
+     * the sea level the probe puts them at). Filled on first use: concurrent probes may each compute
+     * a block, and they store the same value, so no lock is needed.
+     */
+    private float blockMaximum(int level, int br, int bc) {
+        float[] maxima = blockMaxima[level];
+        int index = br * blockCols[level] + bc;
+        float m = maxima[index];
+        if (!Float.isNaN(m)) {
+            return m;
+        }
+        m = Float.NEGATIVE_INFINITY;
+        if (level == 0) {
+            int cells = BLOCK_CELLS[0];
+            int rEnd = Math.min(mosaic.rows() - 1, (br + 1) * cells), cEnd = Math.min(mosaic.cols() - 1, (bc + 1) * cells);
+            for (int r = br * cells; r <= rEnd; r++) {
+                for (int c = bc * cells; c <= cEnd; c++) {
+                    m = (float) Math.max(m, height(r, c));
+                }
+            }
+        } else {
+            int ratio = BLOCK_CELLS[level] / BLOCK_CELLS[level - 1];
+            int rEnd = Math.min(blockRows[level - 1] - 1, (br + 1) * ratio), cEnd = Math.min(blockCols[level - 1] - 1, (bc + 1) * ratio);
+            for (int r = br * ratio; r <= rEnd; r++) { // one finer block beyond the border: the shared border samples
+                for (int c = bc * ratio; c <= cEnd; c++) {
+                    m = Math.max(m, blockMaximum(level - 1, r, c));
+                }
+            }
+        }
+        maxima[index] = m;
+        return m;
+    }
+
     /** Height of the ray's point at distance t above the (lifted) surface, metres; NaN off the mosaic. */
     double clearance(double e, double n, double u, double t) {
+        return clearance(e, n, u, t, new double[POINT]);
+    }
+
+    /**
+     * The same, also filling {@code point} with where the ray is: latitude and longitude (degrees),
+     * height above the ellipsoid and the refraction lift of the surface there (metres).
+     */
+    private double clearance(double e, double n, double u, double t, double[] point) {
         double[] ecef = new double[3];
         frame.enuToEcef(t * e, t * n, t * u, ecef);
         double x = ecef[0], y = ecef[1], z = ecef[2];
         double p = Math.sqrt(x * x + y * y);
         if (p < 1e3) {
-            return clearanceNearPole(x, y, z);
+            double c = clearanceNearPole(x, y, z, point);
+            double lat = Math.toRadians(point[LAT]), lon = Math.toRadians(point[LON]), sinLat = Math.sin(lat);
+            rates(point, sinLat, Math.cos(lat), Math.cos(lon), Math.sin(lon),
+                    Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat), point[HEIGHT], e, n, u);
+            return c;
         }
         // Bowring's closed form (one step from the parametric latitude): under 1e-7 m in height
         // and 1e-12 rad in latitude for terrestrial heights (TerrainRayProbeTest), and trig-free
@@ -123,19 +343,47 @@ public final class TerrainRayProbe implements RayProbe {
         double fx = nRadius * cosLat * x / p - eyeFoot[0], fy = nRadius * cosLat * y / p - eyeFoot[1],
                 fz = nRadius * (1 - Ellipsoid.E2) * sinLat - eyeFoot[2];
         double ground = Refraction.groundDistanceFromChordMetres(Math.sqrt(fx * fx + fy * fy + fz * fz));
-        return clearanceAt(latDeg, lonDeg, height, ground);
+        double c = clearanceAt(latDeg, lonDeg, height, ground, point);
+        rates(point, sinLat, cosLat, x / p, y / p, nRadius, height, e, n, u);
+        return c;
+    }
+
+    /**
+     * Fills the point's rates per metre along the ray: of its height (the ray direction along the
+     * ellipsoid normal there) and of its fractional grid row and column.
+     */
+    private void rates(double[] point, double sinLat, double cosLat, double cosLon, double sinLon, double nRadius,
+                       double height, double e, double n, double u) {
+        double[] dir = new double[3];
+        frame.enuDirectionToEcef(e, n, u, dir);
+        double rise = cosLat * (cosLon * dir[0] + sinLon * dir[1]) + sinLat * dir[2];
+        double east = -sinLon * dir[0] + cosLon * dir[1];
+        double north = -sinLat * (cosLon * dir[0] + sinLon * dir[1]) + cosLat * dir[2];
+        double mRadius = nRadius * (1 - Ellipsoid.E2) / (1 - Ellipsoid.E2 * sinLat * sinLat);
+        double ipd = mosaic.intervalsPerDegree();
+        point[RISE] = rise;
+        point[ROW_RATE] = -Math.toDegrees(north / (mRadius + height)) * ipd;
+        point[COL_RATE] = Math.toDegrees(east / ((nRadius + height) * Math.max(cosLat, 1e-9))) * ipd;
     }
 
     /** The same within 1 km of the axis, by the iterative conversion (Bowring's p divides there). */
-    double clearanceNearPole(double x, double y, double z) {
+    double clearanceNearPole(double x, double y, double z, double[] point) {
         double[] geo = Ellipsoid.toGeodetic(x, y, z);
         double[] foot = new double[3];
         Ellipsoid.toEcef(geo[0], geo[1], 0, foot);
-        return clearanceAt(geo[0], geo[1], geo[2], Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot));
+        return clearanceAt(geo[0], geo[1], geo[2], Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot), point);
     }
 
-    private double clearanceAt(double latDeg, double lonDeg, double heightMetres, double groundDistanceMetres) {
+    private double clearanceAt(double latDeg, double lonDeg, double heightMetres, double groundDistanceMetres, double[] point) {
+        double lift = refraction.liftMetres(groundDistanceMetres);
         double row = mosaic.rowOf(latDeg), col = mosaic.colOf(lonDeg);
+        point[LAT] = latDeg;
+        point[LON] = lonDeg;
+        point[HEIGHT] = heightMetres;
+        point[LIFT] = lift;
+        point[GROUND] = groundDistanceMetres;
+        point[ROW] = row;
+        point[COL] = col;
         int r = (int) Math.floor(row), c = (int) Math.floor(col);
         if (r < 0 || c < 0 || r + 1 >= mosaic.rows() || c + 1 >= mosaic.cols()) {
             return Double.NaN;
@@ -143,7 +391,7 @@ public final class TerrainRayProbe implements RayProbe {
         double v = row - r, w = col - c; // south and east fractions
         double nw = height(r, c), ne = height(r, c + 1), sw = height(r + 1, c), se = height(r + 1, c + 1);
         double surface = LevelOfDetail.interpolate(nw, ne, sw, se, w, v, Triangulation.splitsNorthWestToSouthEast(r, c));
-        return heightMetres - surface - refraction.liftMetres(groundDistanceMetres);
+        return heightMetres - surface - lift;
     }
 
     private double height(int r, int c) {

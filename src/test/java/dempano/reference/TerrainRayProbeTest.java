@@ -36,7 +36,7 @@ class TerrainRayProbeTest {
             double fast = probe.clearance(e, n, u, t);
             double[] ecef = new double[3];
             new LocalFrame(46.5, 8.5, 2000).enuToEcef(t * e, t * n, t * u, ecef);
-            double slow = probe.clearanceNearPole(ecef[0], ecef[1], ecef[2]);
+            double slow = probe.clearanceNearPole(ecef[0], ecef[1], ecef[2], new double[16]);
             if (Double.isNaN(slow)) {
                 assertTrue(Double.isNaN(fast), "off the mosaic for one, not the other");
                 continue;
@@ -64,18 +64,18 @@ class TerrainRayProbeTest {
                 EllipsoidRay.enuDirectionToEcef(frame, origin, e, n, u, new double[3], dir);
                 double truth = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 500, Ellipsoid.B_METRES + 500);
                 // jME axes: east, up, south.
-                double probed = probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth, false);
+                double probed = probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth);
                 assertEquals(truth, probed, 2e-6 * truth, "elevation " + elDeg + "°, azimuth " + azDeg + "°");
             }
         }
     }
 
     @Test
-    void fineStepsFindACrestThatCoarseStepsStepOver() {
+    void findsACrestOneSampleRowWide() {
         // A plane at 500 m with a crest one sample row wide (800 m) 5.0 km north of the eye, cells
         // of 1/600° (185 m north–south, 128 m east–west). A ray aimed 150 m under the crest's top
-        // is below the surface for about 185 m around 5.0 km; coarse steps from 4.7 km (×1.1: to
-        // 5.17 km) step over it and meet the plane far behind, fine steps do not.
+        // is below the surface for about 185 m around 5.0 km; steps of 10 % from 4.7 km (to
+        // 5.17 km) would step over it and meet the plane far behind.
         double crestLat = 46.5 + 3000 / 600.0 / 100; // a sample row, 0.05° north
         Mosaic mosaic = Mosaic.of(Synthetic.dem((lat, lon) -> Math.abs(lat - crestLat) < 1e-6 ? 800 : 500, 46, 8, 1, 1),
                 TileSelection.around(46.5, 8.5, 30_000), MissingTilePolicy.AUTO);
@@ -84,10 +84,117 @@ class TerrainRayProbeTest {
         double crestMetres = 0.05 * Math.PI / 180 * 6_367_000; // meridian arc to the crest, ±0.1 %
         double el = Math.atan2(-150, crestMetres);
         double e = 0, n = Math.cos(el), u = Math.sin(el);
-        double coarse = probe.firstHitMetres(e, u, -n, 4700, 20_000, false);
-        double fine = probe.firstHitMetres(e, u, -n, 4700, 20_000, true);
-        assertTrue(coarse > 5500, "coarse steps stepped over the crest: " + coarse);
-        assertEquals(crestMetres, fine, 200, "fine steps meet the crest");
+        double fine = probe.firstHitMetres(e, u, -n, 4700, 20_000);
+        assertTrue(probe.clearance(e, n, u, 5170) > 0, "at 5.17 km the ray is above the surface again: a step there would miss the crest");
+        assertEquals(crestMetres, fine, 200, "the crest is met");
         assertEquals(0, probe.clearance(e, n, u, fine), 1e-3, "on the surface");
+    }
+
+    /**
+     * On rugged relief (ridges a few cells wide, summits of one sample), the crest-safe search must
+     * find what a dense march finds: the first sign change of the clearance sampled every 1/16 of a
+     * cell, then bisected. The march can miss a crest crossed over less than its step, where the
+     * search (which computes the ray on every edge it crosses near the surface) finds a nearer true
+     * crossing; it must never find a farther one. A march by whole cells must differ often (what the
+     * test is able to see: a search stepping cell by cell would fail it).
+     */
+    @Test
+    void crestSafeSearchFindsWhatADenseMarchFinds() {
+        java.util.function.DoubleBinaryOperator relief = (lat, lon) -> {
+            double y = (lat - 46) * 600, x = (lon - 8) * 600; // in cells
+            double ridges = 400 * Math.abs(Math.sin(0.11 * x + 0.05 * y)) + 300 * Math.abs(Math.sin(0.07 * y - 0.03 * x));
+            double spikes = ((int) (x * 7 + y * 13) % 23 == 0) ? 250 : 0;
+            return 600 + ridges + spikes;
+        };
+        double range = 15_000;
+        Mosaic mosaic = Mosaic.of(Synthetic.dem(relief, 46, 8, 1, 1), TileSelection.around(46.5, 8.5, range), MissingTilePolicy.AUTO);
+        Viewpoint eye = Viewpoint.onDem(mosaic, 46.5, 8.5, 150, 0);
+        TerrainRayProbe probe = new TerrainRayProbe(mosaic, eye, Refraction.STANDARD, range);
+        double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / 600 * Math.cos(Math.toRadians(46.5));
+        Random random = new Random(11);
+        int rays = 400, hits = 0, fineDiffers = 0, cellMarchDiffers = 0;
+        for (int i = 0; i < rays; i++) {
+            double az = random.nextDouble() * 2 * Math.PI, el = Math.toRadians(-4 + 5 * random.nextDouble());
+            double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
+            double truth = denseMarch(probe, e, n, u, cellMetres / 16, range / Math.cos(el));
+            double fine = probe.firstHitMetres(e, u, -n, 50, range / Math.cos(el));
+            double cellMarch = denseMarch(probe, e, n, u, cellMetres, range / Math.cos(el));
+            if (Double.isFinite(truth)) {
+                hits++;
+            }
+            if (differs(fine, truth) && fine < truth) {
+                // Nearer than the march: a crest between its samples, which must be a real crossing.
+                assertTrue(probe.clearance(e, n, u, fine - 0.01) > 0 && probe.clearance(e, n, u, fine + 0.01) < 0,
+                        "a nearer hit that is no crossing at " + fine + " m (march: " + truth + " m)");
+            } else if (differs(fine, truth)) {
+                fineDiffers++;
+            }
+            cellMarchDiffers += differs(cellMarch, truth) ? 1 : 0;
+        }
+        assertTrue(hits > rays / 2, "most rays meet the relief: " + hits);
+        assertEquals(0, fineDiffers, "crest-safe search misses what the dense march finds on " + fineDiffers + " of " + rays + " rays");
+        assertTrue(cellMarchDiffers >= rays / 20, "a march by whole cells should miss crests here: " + cellMarchDiffers);
+    }
+
+    /**
+     * The same on real relief: Mount Washington's SRTM3 tile (N44W072) from 2 m above the summit,
+     * rays from 6° to 0.5° under the horizon, out to 40 km, against a march by 1/8 cell.
+     */
+    @Test
+    void crestSafeSearchOnRealReliefFindsWhatADenseMarchFinds() throws Exception {
+        dempano.dem.DemDirectory dem = new dempano.dem.DemDirectory(dempano.SharedData.demDir());
+        double range = 40_000;
+        Mosaic mosaic = Mosaic.of(dem, TileSelection.around(44.2706, -71.3033, range), MissingTilePolicy.AUTO);
+        Viewpoint eye = Viewpoint.onDem(mosaic, 44.2706, -71.3033, 2, 0);
+        TerrainRayProbe probe = new TerrainRayProbe(mosaic, eye, Refraction.STANDARD, range);
+        double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree() * Math.cos(Math.toRadians(44.27));
+        Random random = new Random(5);
+        int rays = 300, hits = 0, missed = 0;
+        for (int i = 0; i < rays; i++) {
+            double az = random.nextDouble() * 2 * Math.PI, el = Math.toRadians(-6 + 5.5 * random.nextDouble());
+            double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
+            double to = range / Math.cos(el);
+            double truth = denseMarch(probe, e, n, u, cellMetres / 8, to);
+            double probed = probe.firstHitMetres(e, u, -n, 50, to);
+            hits += Double.isFinite(truth) ? 1 : 0;
+            if (differs(probed, truth) && probed < truth) {
+                assertTrue(probe.clearance(e, n, u, probed - 0.01) > 0 && probe.clearance(e, n, u, probed + 0.01) < 0,
+                        "a nearer hit that is no crossing at " + probed + " m (march: " + truth + " m)");
+            } else if (differs(probed, truth)) {
+                missed++;
+            }
+        }
+        assertTrue(hits > rays / 2, "most rays meet the relief: " + hits);
+        assertEquals(0, missed, "the search missed what the dense march found on " + missed + " of " + rays + " rays");
+    }
+
+    private static boolean differs(double probed, double truth) {
+        if (Double.isInfinite(truth) || Double.isNaN(truth)) {
+            return Double.isFinite(probed);
+        }
+        return !(Math.abs(probed - truth) <= 1e-6 * truth);
+    }
+
+    /** The first sign change of the clearance sampled every {@code step} metres, bisected to 1e-10; +∞ when none. */
+    private static double denseMarch(TerrainRayProbe probe, double e, double n, double u, double step, double to) {
+        double a = 50;
+        for (double b = a + step; b <= to; a = b, b += step) {
+            double cb = probe.clearance(e, n, u, b);
+            if (Double.isNaN(cb)) {
+                return Double.POSITIVE_INFINITY;
+            }
+            if (cb <= 0) {
+                for (int k = 0; k < 80 && b - a > 1e-10 * b; k++) {
+                    double m = 0.5 * (a + b);
+                    if (probe.clearance(e, n, u, m) > 0) {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+                return 0.5 * (a + b);
+            }
+        }
+        return Double.POSITIVE_INFINITY;
     }
 }
