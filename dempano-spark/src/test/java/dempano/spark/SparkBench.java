@@ -16,7 +16,8 @@ import picocli.CommandLine;
  * {@code gradle :dempano-spark:benchSpark}: seconds per panorama on this machine, dempano batch
  * against the Spark job in local mode, rows ordered by tile and at random. A generated relief of
  * 4 × 5 SRTM3 tiles (more than the DEM folder's 16 cached tiles), viewpoints at random over it.
- * Prints a Markdown table. Arguments: WORKDIR [ROWS [PPD [RANGE_KM [THREADS]]]].
+ * Spark runs alternate random, tile, random, tile (the first run also warms the JVM). Prints a Markdown table.
+ * Arguments: WORKDIR [ROWS [PPD [RANGE_KM [THREADS [nobatch]]]]].
  */
 public final class SparkBench {
     public static void main(String[] args) throws Exception {
@@ -41,18 +42,21 @@ public final class SparkBench {
         List<String> a = new ArrayList<>(List.of(viewpoints.toString(), "--out-dir", work.resolve("out-batch").toString(),
                 "--dem-dir", dem.toString()));
         a.addAll(List.of(options));
-        long t0 = System.nanoTime();
-        int code = new CommandLine(new BatchCommand()).execute(a.toArray(new String[0]));
-        double batch = (System.nanoTime() - t0) / 1e9;
-        table.add(row("dempano batch (one process, rows in file order = random)", rows, batch));
-        if (code != 0) {
-            throw new IllegalStateException("dempano batch exited with " + code);
+        if (!(args.length > 5 && args[5].equals("nobatch"))) {
+            long t0 = System.nanoTime();
+            int code = new CommandLine(new BatchCommand()).execute(a.toArray(new String[0]));
+            double batch = (System.nanoTime() - t0) / 1e9;
+            table.add(row("dempano batch (one process, rows in file order = random)", rows, batch));
+            if (code != 0) {
+                throw new IllegalStateException("dempano batch exited with " + code);
+            }
         }
 
         SparkSession spark = SparkSession.builder().master("local[" + threads + "]").appName("dempano-spark-bench")
                 .config("spark.ui.enabled", "false").config("spark.driver.host", "127.0.0.1").getOrCreate();
         try {
-            for (SparkBatch.Order order : new SparkBatch.Order[] {SparkBatch.Order.TILE, SparkBatch.Order.RANDOM}) {
+            for (SparkBatch.Order order : new SparkBatch.Order[] {SparkBatch.Order.RANDOM,
+                    SparkBatch.Order.TILE, SparkBatch.Order.RANDOM, SparkBatch.Order.TILE}) {
                 ExecutorRenderer.closeAll(); // each run starts with cold caches, as a fresh executor would
                 SparkBatchMain m = new SparkBatchMain();
                 List<String> b = new ArrayList<>(List.of(viewpoints.toString(), "--out-dir",
