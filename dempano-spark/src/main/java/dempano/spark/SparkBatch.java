@@ -1,0 +1,197 @@
+package dempano.spark;
+
+import static org.apache.spark.sql.functions.col;
+import static org.apache.spark.sql.functions.concat;
+import static org.apache.spark.sql.functions.first;
+import static org.apache.spark.sql.functions.floor;
+import static org.apache.spark.sql.functions.length;
+import static org.apache.spark.sql.functions.lit;
+import static org.apache.spark.sql.functions.lower;
+import static org.apache.spark.sql.functions.monotonically_increasing_id;
+import static org.apache.spark.sql.functions.rand;
+import static org.apache.spark.sql.functions.row_number;
+import static org.apache.spark.sql.functions.when;
+
+import dempano.batch.ViewpointCsv;
+import java.io.Serializable;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.NoSuchElementException;
+import org.apache.spark.api.java.JavaRDD;
+import org.apache.spark.api.java.function.FlatMapFunction;
+import org.apache.spark.sql.Column;
+import org.apache.spark.sql.Dataset;
+import org.apache.spark.sql.Row;
+import org.apache.spark.sql.RowFactory;
+import org.apache.spark.sql.SparkSession;
+import org.apache.spark.sql.expressions.Window;
+import org.apache.spark.sql.types.DataTypes;
+import org.apache.spark.sql.types.StructType;
+
+/**
+ * The batch job on Spark: every row of a viewpoint table (CSV with a header line, or Parquet; the
+ * columns of {@code dempano batch}: id, lat, lon, altitude_m, offset_m, eye_height_m, range_km, ppd)
+ * rendered on the executors, one renderer per executor JVM ({@link ExecutorRenderer}), each row's
+ * files written to the output folder (any Hadoop-compatible path) and a results table
+ * {@code OUT/results/part-*.csv} (id,status,files,seconds,error). A row that fails is an error line
+ * in the results; the job goes on.
+ *
+ * <p>Rows are ordered by DEM tile ({@link Order#TILE}): range-partitioned on (floor(lat), floor(lon),
+ * lat, lon) and sorted within each partition, so that a task's rows share tiles and the executor's
+ * caches serve them; {@link Order#RANDOM} is there to measure what that buys.
+ */
+public final class SparkBatch {
+    /** How rows are spread over tasks. */
+    public enum Order {
+        /** By DEM tile, then position (the default). */
+        TILE,
+        /** Shuffled (to measure the tile order's gain). */
+        RANDOM,
+        /** As read. */
+        INPUT
+    }
+
+    /** Columns of the results table, as {@code dempano batch} writes {@code results.csv}. */
+    public static final List<String> RESULT_COLUMNS = List.of("id", "status", "files", "seconds", "error");
+
+    /** The outcome of a job: counts from the results table and where it is. */
+    public record Summary(long rows, long ok, long errors, double seconds, String results) {
+    }
+
+    private static final String SEQ = "_dempano_seq", DUP = "_dempano_duplicate_of", TLAT = "_dempano_tile_lat",
+            TLON = "_dempano_tile_lon", LAT = "_dempano_lat", LON = "_dempano_lon", KEY = "_dempano_key";
+
+    private SparkBatch() {
+    }
+
+    /**
+     * Reads a viewpoint table: Parquet when the path ends in .parquet (or format says so), else CSV with
+     * a header line (every cell read as text, as {@code dempano batch} reads it).
+     */
+    public static Dataset<Row> read(SparkSession spark, String input, String format) {
+        boolean parquet = "parquet".equalsIgnoreCase(format)
+                || (!"csv".equalsIgnoreCase(format) && input.toLowerCase(Locale.ROOT).replaceAll("/+$", "").endsWith(".parquet"));
+        if (parquet) {
+            return spark.read().parquet(input);
+        }
+        return spark.read().option("header", "true").option("inferSchema", "false").option("encoding", "UTF-8")
+                .option("ignoreLeadingWhiteSpace", "true").option("ignoreTrailingWhiteSpace", "true")
+                .option("escape", "\"").csv(input);
+    }
+
+    /** Renders every row of the table; see the class comment. */
+    public static Summary run(SparkSession spark, Dataset<Row> table, JobSettings settings, Order order, int partitions,
+                              long seed) {
+        long t0 = System.nanoTime();
+        settings.hadoop = Hadoop.settings(spark.sparkContext().hadoopConfiguration());
+        settings.check();
+        // The viewpoint columns present, by their name in the table (matched as dempano batch matches them).
+        Map<String, String> known = new LinkedHashMap<>();
+        for (String c : table.columns()) {
+            String n = c.trim().toLowerCase(Locale.ROOT);
+            if (ViewpointCsv.COLUMNS.contains(n) && known.put(n, c) != null) {
+                throw new IllegalArgumentException("the table names column '" + n + "' twice");
+            }
+        }
+        for (String required : List.of(ViewpointCsv.ID, ViewpointCsv.LAT, ViewpointCsv.LON)) {
+            if (!known.containsKey(required)) {
+                throw new IllegalArgumentException("the table has no column '" + required + "' (it has: "
+                        + String.join(", ", table.columns()) + "; required: id, lat, lon)");
+            }
+        }
+        List<Column> cells = new ArrayList<>();
+        known.forEach((n, c) -> cells.add(col("`" + c + "`").cast(DataTypes.StringType).as(n)));
+        Dataset<Row> rows = table.select(cells.toArray(new Column[0])).withColumn(SEQ, monotonically_increasing_id());
+
+        // Repeated ids (without regard to case, among safe ids), the first in table order kept, as dempano batch does.
+        Column id = col(ViewpointCsv.ID);
+        Column safe = id.rlike("^[A-Za-z0-9][A-Za-z0-9._-]*$").and(id.endsWith(".").unary_$bang()).and(length(id).leq(100));
+        rows = rows.withColumn(KEY, when(safe, lower(id)).otherwise(concat(lit("\u0000"), col(SEQ).cast("string"))));
+        var byId = Window.partitionBy(KEY).orderBy(SEQ);
+        rows = rows.withColumn(DUP, when(row_number().over(byId).gt(1),
+                concat(lit("row '"), first(id).over(byId), lit("'"))));
+
+        rows = rows.withColumn(LAT, col(ViewpointCsv.LAT).cast(DataTypes.DoubleType))
+                .withColumn(LON, col(ViewpointCsv.LON).cast(DataTypes.DoubleType))
+                .withColumn(TLAT, floor(col(LAT))).withColumn(TLON, floor(col(LON)));
+        int n = Math.max(1, partitions);
+        rows = switch (order) {
+            case TILE -> rows.repartitionByRange(n, col(TLAT), col(TLON), col(LAT), col(LON))
+                    .sortWithinPartitions(TLAT, TLON, LAT, LON);
+            case RANDOM -> rows.withColumn(KEY, rand(seed)).repartitionByRange(n, col(KEY)).sortWithinPartitions(KEY);
+            case INPUT -> rows.repartitionByRange(n, col(SEQ)).sortWithinPartitions(SEQ);
+        };
+        List<String> names = new ArrayList<>(known.keySet());
+        JavaRDD<Row> out = rows.select(concatColumns(names)).javaRDD().mapPartitions(new RenderPartition(settings, names));
+        StructType schema = new StructType()
+                .add("id", DataTypes.StringType).add("status", DataTypes.StringType).add("files", DataTypes.StringType)
+                .add("seconds", DataTypes.StringType).add("error", DataTypes.StringType);
+        String resultsDir = resultsDir(settings.outDir);
+        spark.createDataFrame(out, schema).write().mode("overwrite").option("header", "true").option("escape", "\"")
+                .csv(resultsDir);
+
+        Dataset<Row> results = spark.read().option("header", "true").option("escape", "\"").csv(resultsDir);
+        long total = 0, ok = 0;
+        for (Row r : results.groupBy("status").count().collectAsList()) {
+            total += r.getLong(1);
+            ok += "ok".equals(r.getString(0)) ? r.getLong(1) : 0;
+        }
+        return new Summary(total, ok, total - ok, (System.nanoTime() - t0) / 1e9, resultsDir);
+    }
+
+    /** Where the results table goes: {@code OUT/results}. */
+    public static String resultsDir(String outDir) {
+        return outDir.replaceAll("/+$", "") + "/results";
+    }
+
+    private static Column[] concatColumns(List<String> names) {
+        List<Column> c = new ArrayList<>();
+        for (String n : names) {
+            c.add(col(n));
+        }
+        c.add(col(DUP));
+        return c.toArray(new Column[0]);
+    }
+
+    /** An executor's side: renders a partition's rows one after another, lazily, with the JVM's renderer. */
+    static final class RenderPartition implements FlatMapFunction<Iterator<Row>, Row>, Serializable {
+        private static final long serialVersionUID = 1L;
+        private final JobSettings settings;
+        private final List<String> names;
+
+        RenderPartition(JobSettings settings, List<String> names) {
+            this.settings = settings;
+            this.names = List.copyOf(names);
+        }
+
+        @Override
+        public Iterator<Row> call(Iterator<Row> in) {
+            RowRenderer renderer = new RowRenderer(settings);
+            return new Iterator<>() {
+                @Override
+                public boolean hasNext() {
+                    return in.hasNext();
+                }
+
+                @Override
+                public Row next() {
+                    if (!in.hasNext()) {
+                        throw new NoSuchElementException();
+                    }
+                    Row r = in.next();
+                    Map<String, String> cells = new LinkedHashMap<>();
+                    for (int i = 0; i < names.size(); i++) {
+                        cells.put(names.get(i), r.getString(i));
+                    }
+                    RowRenderer.Outcome o = renderer.render(cells.get(ViewpointCsv.ID), cells, r.getString(names.size()));
+                    return RowFactory.create(o.id(), o.status(), o.files(), String.format(Locale.ROOT, "%.3f", o.seconds()),
+                            o.error());
+                }
+            };
+        }
+    }
+}
