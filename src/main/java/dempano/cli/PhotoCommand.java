@@ -168,10 +168,20 @@ public final class PhotoCommand implements Callable<Integer> {
         try (PanoramaRenderer r = PanoramaRenderer.open(dempano.dem.PriorityDem.of(sources))) {
             if (open.any()) {
                 dempano.camera.CameraOrientation k = camera.pose().orientation();
-                dempano.orient.PhotoOrientation.Result est = open.estimate(r, settings.withOffsetMetres(camera.pose().offsetMetres())
-                                .withAltitudeMetres(camera.pose().altitudeMetres()).withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                        photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
-                        headingRangeDeg == null ? Double.NaN : headingRangeDeg);
+                dempano.orient.PhotoOrientation.Result est;
+                try {
+                    est = open.estimate(r, settings.withOffsetMetres(camera.pose().offsetMetres())
+                                    .withAltitudeMetres(camera.pose().altitudeMetres()).withEyeHeightMetres(camera.pose().cameraHeightMetres()),
+                            photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
+                            // The range is a prior only around a heading that was given (flag or metadata).
+                            headingRangeDeg == null || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
+                                    ? Double.NaN : headingRangeDeg);
+                } catch (IllegalArgumentException e) {
+                    List<String> missing = meta.missing(given);
+                    throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
+                            + " from the photo: " + e.getMessage() + (missing.isEmpty() ? "" : "; give them instead:\n  - "
+                            + String.join("\n  - ", missing)), e);
+                }
                 String line = est.provenance(open);
                 System.out.println(line);
                 try {
