@@ -83,8 +83,13 @@ public final class PhotoCommand implements Callable<Integer> {
     @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
             description = "Every pixel's distance along its own ray against the triangles seen (default); --no-exact-distances interpolates the views' depth.")
     boolean exactDistances;
+    @Option(names = "--heading-range-deg", paramLabel = "DEG", description = "Estimate the heading within ± DEG of the one given (flag or EXIF compass) instead of taking it as is.")
+    Double headingRangeDeg;
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (as for panoramas): P-summits.json/csv and labels.")
     Path summitsFile;
+
+    private BufferedImage orientationOverlay;
+    private String orientationJson;
 
     @Override
     public Integer call() throws Exception {
@@ -129,6 +134,14 @@ public final class PhotoCommand implements Callable<Integer> {
             meta = new PhotoMetadata("camera from flags", widthPx, heightPx, 1, Double.NaN, Double.NaN, Double.NaN,
                     Double.NaN, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, null, List.of());
         }
+        // Heading, pitch, roll and field of view that neither flags nor metadata give are estimated from the skyline.
+        dempano.orient.PhotoOrientation open = photo == null ? new dempano.orient.PhotoOrientation(false, false, false, false)
+                : dempano.orient.PhotoOrientation.open(meta, o, headingRangeDeg != null);
+        PhotoOverrides given = o;
+        if (open.any()) {
+            System.err.println("  estimating from the skyline: " + String.join(", ", open.names()));
+            o = open.placeholders(o);
+        }
         PhotoCamera camera;
         try {
             camera = meta.resolve(o);
@@ -153,6 +166,36 @@ public final class PhotoCommand implements Callable<Integer> {
                 .withSupersampling(supersampling).withExactDistances(exactDistances);
         CameraImage rendered;
         try (PanoramaRenderer r = PanoramaRenderer.open(dempano.dem.PriorityDem.of(sources))) {
+            if (open.any()) {
+                dempano.camera.CameraOrientation k = camera.pose().orientation();
+                dempano.orient.PhotoOrientation.Result est;
+                try {
+                    est = open.estimate(r, settings.withOffsetMetres(camera.pose().offsetMetres())
+                                    .withAltitudeMetres(camera.pose().altitudeMetres()).withEyeHeightMetres(camera.pose().cameraHeightMetres()),
+                            photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
+                            // The range is a prior only around a heading that was given (flag or metadata).
+                            headingRangeDeg == null || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
+                                    ? Double.NaN : headingRangeDeg);
+                } catch (IllegalArgumentException e) {
+                    List<String> missing = meta.missing(given);
+                    throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
+                            + " from the photo: " + e.getMessage() + (missing.isEmpty() ? "" : "; give them instead:\n  - "
+                            + String.join("\n  - ", missing)), e);
+                }
+                String line = est.provenance(open);
+                System.out.println(line);
+                try {
+                    camera = meta.resolve(open.apply(given, est.estimate()));
+                } catch (dempano.camera.PhotoMetadataException e) {
+                    throw new IllegalArgumentException(e.getMessage(), e);
+                }
+                List<String> prov = new ArrayList<>(camera.provenance());
+                prov.add(line);
+                camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
+                orientationOverlay = est.overlay();
+                orientationJson = new com.google.gson.GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues()
+                        .create().toJson(est.estimate());
+            }
             rendered = r.render(CameraRequest.of(camera).withSettings(settings),
                     stage -> System.err.println("  " + stage));
         }
@@ -162,6 +205,14 @@ public final class PhotoCommand implements Callable<Integer> {
                         + " timings %s", rendered.widthPx(), rendered.heightPx(), rendered.metadata().latDeg(),
                 rendered.metadata().lonDeg(), rendered.metadata().eyeAltitudeMetres(), rendered.metadata().views(),
                 rendered.metadata().viewWidthPx(), rendered.metadata().viewHeightPx(), rendered.metadata().timingsMillis()));
+        if (orientationOverlay != null) {
+            Path png = Path.of(out + "-orientation.png"), json = Path.of(out + "-orientation.json");
+            ImageIO.write(orientationOverlay, "png", png.toFile());
+            java.nio.file.Files.writeString(json, orientationJson + "\n");
+            files = new ArrayList<>(files);
+            files.add(png);
+            files.add(json);
+        }
         files.forEach(f -> System.out.println("wrote " + f));
         return 0;
     }

@@ -1,0 +1,38 @@
+package dempano.orient;
+
+/**
+ * Where a photo's camera pointed, as found by matching its skyline, and how sure the match is.
+ *
+ * <p>Confidence: the residuals are the differences, in photo pixels, between the photo's skyline and the rendered
+ * skyline projected with the estimate (one per sampled photo column). {@code score} is their mean truncated
+ * absolute value divided by the truncation {@link OrientationEstimator#TRUNCATION_PX} (0 = every sample on the
+ * rendered skyline, 1 = none within the truncation). {@code marginScore} is the score of the best other heading
+ * (a separately refined local optimum more than {@link OrientationEstimator#DISTINCT_HEADING_DEG} away) minus
+ * the best score: near 0, two headings explain the skyline about equally well. {@code unsure} is set when the
+ * margin is below {@link OrientationEstimator#UNSURE_MARGIN} or fewer than
+ * {@link OrientationEstimator#UNSURE_INLIER_SHARE} of the samples fit.
+ *
+ * @param headingDeg        optical axis, degrees clockwise from true north, [0, 360)
+ * @param pitchDeg          optical axis above the horizontal, degrees
+ * @param rollDeg           degrees, positive clockwise as the photographer sees it
+ * @param hfovDeg           horizontal field of view, degrees
+ * @param residualPx        root mean square of the fitting residuals (within the truncation), photo pixels
+ * @param inlierShare       weighted share of skyline samples within the truncation, [0, 1]
+ * @param score             see above, [0, 1]
+ * @param secondHeadingDeg  the best other heading, degrees; NaN when there was none (a pinned or narrow prior)
+ * @param marginScore       second score − best score; NaN when there was no other heading
+ * @param unsure            whether the match should not be trusted (see above)
+ * @param samples           skyline samples used
+ * @param seconds           time spent matching (not rendering), seconds
+ */
+public record OrientationEstimate(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg,
+                                  double residualPx, double inlierShare, double score, double secondHeadingDeg,
+                                  double marginScore, boolean unsure, int samples, double seconds) {
+    /** One line for a log. */
+    public String summary() {
+        return String.format(java.util.Locale.ROOT, "heading %.2f°, pitch %.2f°, roll %.2f°, hfov %.2f°;"
+                        + " residual %.2f px, %.0f %% of %d skyline samples fit, margin %.3f over heading %.1f°%s",
+                headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, marginScore,
+                secondHeadingDeg, unsure ? " — UNSURE" : "");
+    }
+}

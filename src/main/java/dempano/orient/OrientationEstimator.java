@@ -1,0 +1,467 @@
+package dempano.orient;
+
+import dempano.camera.CameraIntrinsics;
+import dempano.camera.CameraOrientation;
+import dempano.camera.CameraView;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+
+/**
+ * Finds a photo's heading, pitch, roll and horizontal field of view by matching its skyline against a rendered
+ * 360° skyline ({@link HorizonProfile}). Two stages, both on skyline samples (photo columns with a skyline):
+ *
+ * <ol>
+ *   <li><b>Coarse, global</b>: every heading in the prior on a {@link #COARSE_HEADING_STEP_DEG} grid, every field
+ *   of view in the prior on a {@link #COARSE_FOV_STEP} relative grid. For each pair the samples are placed as a
+ *   level pinhole camera would see them (azimuth offset α, elevation e); the rendered skyline minus e is then
+ *   about θ·cos α − φ·sin α for a small pitch θ and roll φ, which a robust linear least-squares fit removes. The
+ *   score is the mean truncated residual.</li>
+ *   <li><b>Fine</b>: the best {@link #CANDIDATES} distinct local optima of the coarse score are refined with the
+ *   exact camera model ({@link CameraView}) by Levenberg–Marquardt on the truncated squared residuals in photo
+ *   pixels, with a shrinking truncation (12, 6, 3 px). The lowest refined score wins; the best other heading
+ *   gives the margin (see {@link OrientationEstimate}).</li>
+ * </ol>
+ *
+ * Stateless; no rendering.
+ */
+public final class OrientationEstimator {
+    /** Final residual truncation, photo pixels. */
+    public static final double TRUNCATION_PX = 3;
+    /** Headings closer than this are the same candidate, degrees. */
+    public static final double DISTINCT_HEADING_DEG = 2;
+    /** Below this margin (second score − best score) the estimate is flagged unsure. */
+    public static final double UNSURE_MARGIN = 0.1;
+    /** Below this share of fitting samples the estimate is flagged unsure. */
+    public static final double UNSURE_INLIER_SHARE = 0.5;
+    static final int COARSE_SAMPLES = 100, FINE_SAMPLES = 300;
+    static final double COARSE_HEADING_STEP_DEG = 0.25;
+    static final double COARSE_FOV_STEP = 0.015;
+    static final int CANDIDATES = 6;
+    private static final double[] SCHEDULE_PX = {12, 6, TRUNCATION_PX};
+
+    private OrientationEstimator() {
+    }
+
+    /** Skyline samples: photo pixel positions and weights. */
+    record Samples(double[] x, double[] y, double[] w) {
+        static Samples of(Skyline sky, int max) {
+            List<Integer> cols = new ArrayList<>();
+            for (int c = 0; c < sky.widthPx(); c++) {
+                if (!Double.isNaN(sky.row(c)) && sky.weightOf(c) > 0) {
+                    cols.add(c);
+                }
+            }
+            int n = Math.min(max, cols.size());
+            double[] x = new double[n], y = new double[n], w = new double[n];
+            for (int k = 0; k < n; k++) {
+                int c = cols.get((int) ((k + 0.5) * cols.size() / n));
+                x[k] = c;
+                y[k] = sky.row(c);
+                w[k] = sky.weightOf(c);
+            }
+            return new Samples(x, y, w);
+        }
+
+        int size() {
+            return x.length;
+        }
+    }
+
+    /** A coarse or refined hypothesis: heading, pitch, roll, hfov (degrees) and its score. */
+    record Hypothesis(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg, double score) {
+    }
+
+    /**
+     * Estimates the orientation.
+     *
+     * @throws IllegalArgumentException when the photo has too little skyline to match (fewer than 20 columns)
+     */
+    public static OrientationEstimate estimate(Skyline sky, HorizonProfile profile, OrientationPriors priors) {
+        long t0 = System.nanoTime();
+        Samples coarse = Samples.of(sky, COARSE_SAMPLES), fine = Samples.of(sky, FINE_SAMPLES);
+        if (fine.size() < 20) {
+            throw new IllegalArgumentException("the photo shows too little skyline to find its orientation ("
+                    + fine.size() + " columns with a sky/land edge; at least 20 are needed)");
+        }
+        int w = sky.widthPx(), h = sky.heightPx();
+        List<Hypothesis> candidates = priors.headingPinned()
+                ? List.of(new Hypothesis(priors.headingDeg(), orZero(priors.pitchDeg()), orZero(priors.rollDeg()),
+                Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg()), Double.NaN))
+                : coarse(coarse, w, h, profile, priors);
+        List<Hypothesis> refined = new ArrayList<>();
+        for (Hypothesis c : candidates) {
+            refined.add(refine(c, fine, w, h, profile, priors));
+        }
+        refined.sort(Comparator.comparingDouble(Hypothesis::score));
+        Hypothesis best = refined.get(0);
+        Hypothesis second = null;
+        for (Hypothesis r : refined) {
+            if (headingGap(r.headingDeg(), best.headingDeg()) > DISTINCT_HEADING_DEG) {
+                second = r;
+                break;
+            }
+        }
+        double[] res = residualsPx(best, fine, w, h, profile);
+        double sw = 0, inW = 0, sq = 0;
+        for (int i = 0; i < res.length; i++) {
+            sw += fine.w()[i];
+            if (Math.abs(res[i]) < TRUNCATION_PX) {
+                inW += fine.w()[i];
+                sq += fine.w()[i] * res[i] * res[i];
+            }
+        }
+        double inlierShare = inW / sw;
+        double margin = second == null ? Double.NaN : second.score() - best.score();
+        boolean unsure = inlierShare < UNSURE_INLIER_SHARE || (second != null && margin < UNSURE_MARGIN);
+        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+                inW > 0 ? Math.sqrt(sq / inW) : Double.NaN, inlierShare, best.score(),
+                second == null ? Double.NaN : normalize360(second.headingDeg()), margin, unsure, fine.size(),
+                (System.nanoTime() - t0) / 1e9);
+    }
+
+    private static double orZero(double v) {
+        return Double.isNaN(v) ? 0 : v;
+    }
+
+    /** The coarse search: the best distinct local optima over heading, best first. */
+    static List<Hypothesis> coarse(Samples s, int w, int h, HorizonProfile profile, OrientationPriors priors) {
+        boolean full = Double.isNaN(priors.headingDeg()) || priors.headingRangeDeg() >= 180;
+        double h0 = full ? 0 : priors.headingDeg() - priors.headingRangeDeg();
+        int nh = full ? (int) Math.round(360 / COARSE_HEADING_STEP_DEG)
+                : (int) Math.floor(2 * priors.headingRangeDeg() / COARSE_HEADING_STEP_DEG) + 1;
+        int nf = priors.hfovPinned() ? 1
+                : (int) Math.ceil(Math.log(priors.hfovMaxDeg() / priors.hfovMinDeg()) / Math.log1p(COARSE_FOV_STEP)) + 1;
+        double[] bestScore = new double[nh], bestFov = new double[nh], bestA = new double[nh], bestB = new double[nh];
+        java.util.Arrays.fill(bestScore, Double.POSITIVE_INFINITY);
+        int n = s.size();
+        double cx = CameraIntrinsics.centre(w), cy = CameraIntrinsics.centre(h);
+        double[] alpha = new double[n], el = new double[n], cosA = new double[n], sinA = new double[n], r = new double[n],
+                work = new double[n];
+        boolean pitchFree = Double.isNaN(priors.pitchDeg()), rollFree = Double.isNaN(priors.rollDeg());
+        for (int k = 0; k < nf; k++) {
+            double fov = nf == 1 ? Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg())
+                    : Math.min(priors.hfovMaxDeg(), priors.hfovMinDeg() * Math.pow(1 + COARSE_FOV_STEP, k));
+            double f = w / 2.0 / Math.tan(Math.toRadians(fov) / 2);
+            for (int i = 0; i < n; i++) {
+                double u = s.x()[i] - cx, v = cy - s.y()[i];
+                double a = Math.atan(u / f);
+                alpha[i] = Math.toDegrees(a);
+                el[i] = Math.toDegrees(Math.atan2(v, Math.hypot(f, u)));
+                cosA[i] = Math.cos(a);
+                sinA[i] = Math.sin(a);
+            }
+            double tDeg = Math.max(3 * Math.toDegrees(1 / f), 2 / profile.pixelsPerDegree());
+            for (int j = 0; j < nh; j++) {
+                double heading = h0 + j * COARSE_HEADING_STEP_DEG;
+                for (int i = 0; i < n; i++) {
+                    r[i] = profile.elevationDeg(heading + alpha[i]) - el[i];
+                }
+                double pitch = pitchFree ? 0 : priors.pitchDeg(), b = rollFree ? 0 : -priors.rollDeg();
+                if (pitchFree) {
+                    // A robust start: the median offset (a third of the skyline hidden moves it little).
+                    int m = 0;
+                    for (int i = 0; i < n; i++) {
+                        double v = r[i] - b * sinA[i];
+                        if (!Double.isNaN(v)) {
+                            work[m++] = v;
+                        }
+                    }
+                    pitch = m == 0 ? 0 : clamp(select(work, m, m / 2), priors.pitchLimitDeg());
+                }
+                double threshold = 3 * tDeg;
+                for (int pass = 0; pass < 3; pass++) {
+                    double saa = 0, sab = 0, sbb = 0, sar = 0, sbr = 0;
+                    for (int i = 0; i < n; i++) {
+                        double res = r[i] - pitch * cosA[i] - b * sinA[i];
+                        if (!(Math.abs(res) < threshold)) {
+                            continue;
+                        }
+                        double wi = s.w()[i];
+                        saa += wi * cosA[i] * cosA[i];
+                        sab += wi * cosA[i] * sinA[i];
+                        sbb += wi * sinA[i] * sinA[i];
+                        sar += wi * cosA[i] * r[i];
+                        sbr += wi * sinA[i] * r[i];
+                    }
+                    if (pitchFree && rollFree) {
+                        double det = saa * sbb - sab * sab;
+                        if (det > 1e-12) {
+                            pitch = (sar * sbb - sbr * sab) / det;
+                            b = (saa * sbr - sab * sar) / det;
+                        }
+                    } else if (pitchFree && saa > 0) {
+                        pitch = (sar - b * sab) / saa;
+                    } else if (rollFree && sbb > 0) {
+                        b = (sbr - pitch * sab) / sbb;
+                    }
+                    pitch = pitchFree ? clamp(pitch, priors.pitchLimitDeg()) : pitch;
+                    b = rollFree ? clamp(b, priors.rollLimitDeg()) : b;
+                    threshold = pass == 0 ? 2 * tDeg : tDeg;
+                }
+                double sum = 0, sw = 0;
+                for (int i = 0; i < n; i++) {
+                    double res = Math.abs(r[i] - pitch * cosA[i] - b * sinA[i]);
+                    sum += s.w()[i] * (res < tDeg ? res / tDeg : 1);
+                    sw += s.w()[i];
+                }
+                double score = sum / sw;
+                if (score < bestScore[j]) {
+                    bestScore[j] = score;
+                    bestFov[j] = fov;
+                    bestA[j] = pitch;
+                    bestB[j] = b;
+                }
+            }
+        }
+        // Local minima over heading, best first, at least DISTINCT_HEADING_DEG apart.
+        List<Integer> minima = new ArrayList<>();
+        for (int j = 0; j < nh; j++) {
+            int jl = full ? Math.floorMod(j - 1, nh) : Math.max(0, j - 1), jr = full ? (j + 1) % nh : Math.min(nh - 1, j + 1);
+            if (bestScore[j] <= bestScore[jl] && bestScore[j] <= bestScore[jr]) {
+                minima.add(j);
+            }
+        }
+        minima.sort(Comparator.comparingDouble(j -> bestScore[j]));
+        List<Hypothesis> out = new ArrayList<>();
+        for (int j : minima) {
+            double heading = h0 + j * COARSE_HEADING_STEP_DEG;
+            boolean distinct = out.stream().allMatch(o -> headingGap(o.headingDeg(), heading) > DISTINCT_HEADING_DEG);
+            if (distinct) {
+                out.add(new Hypothesis(heading, bestA[j], -bestB[j], bestFov[j], bestScore[j]));
+                if (out.size() == CANDIDATES) {
+                    break;
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Levenberg–Marquardt on the truncated squared pixel residuals, over the free parameters. */
+    static Hypothesis refine(Hypothesis start, Samples s, int w, int h, HorizonProfile profile, OrientationPriors priors) {
+        double[] p = {start.headingDeg(), start.pitchDeg(), start.rollDeg(), start.hfovDeg()};
+        boolean[] free = {!priors.headingPinned(), Double.isNaN(priors.pitchDeg()), Double.isNaN(priors.rollDeg()),
+            !priors.hfovPinned()};
+        if (!free[1]) {
+            p[1] = priors.pitchDeg();
+        }
+        if (!free[2]) {
+            p[2] = priors.rollDeg();
+        }
+        double[] steps = {1e-3, 1e-3, 1e-3, 1e-3};
+        int n = s.size();
+        for (double t : SCHEDULE_PX) {
+            double lambda = 1e-3;
+            double[] r = residualsPx(hyp(p), s, w, h, profile);
+            double cost = truncatedCost(r, s.w(), t);
+            for (int iter = 0; iter < 25; iter++) {
+                double[][] jac = new double[4][];
+                for (int k = 0; k < 4; k++) {
+                    if (free[k]) {
+                        double[] q = p.clone();
+                        q[k] += steps[k];
+                        double[] rq = residualsPx(hyp(q), s, w, h, profile);
+                        jac[k] = new double[n];
+                        for (int i = 0; i < n; i++) {
+                            jac[k][i] = (rq[i] - r[i]) / steps[k];
+                        }
+                    }
+                }
+                double[][] a = new double[4][4];
+                double[] g = new double[4];
+                for (int i = 0; i < n; i++) {
+                    if (!(Math.abs(r[i]) < t)) {
+                        continue;
+                    }
+                    for (int k = 0; k < 4; k++) {
+                        if (jac[k] == null || !Double.isFinite(jac[k][i])) {
+                            continue;
+                        }
+                        g[k] += s.w()[i] * jac[k][i] * r[i];
+                        for (int l = 0; l < 4; l++) {
+                            if (jac[l] != null && Double.isFinite(jac[l][i])) {
+                                a[k][l] += s.w()[i] * jac[k][i] * jac[l][i];
+                            }
+                        }
+                    }
+                }
+                boolean improved = false;
+                for (int attempt = 0; attempt < 8 && !improved; attempt++) {
+                    double[][] m = new double[4][4];
+                    for (int k = 0; k < 4; k++) {
+                        for (int l = 0; l < 4; l++) {
+                            m[k][l] = free[k] && free[l] ? a[k][l] : (k == l ? 1 : 0);
+                        }
+                        if (free[k]) {
+                            m[k][k] += lambda * (a[k][k] + 1e-9);
+                        }
+                    }
+                    double[] rhs = new double[4];
+                    for (int k = 0; k < 4; k++) {
+                        rhs[k] = free[k] ? -g[k] : 0;
+                    }
+                    double[] dp = solve(m, rhs);
+                    double[] q = p.clone();
+                    for (int k = 0; k < 4; k++) {
+                        q[k] += dp == null ? 0 : dp[k];
+                    }
+                    q[1] = Math.max(-priors.pitchLimitDeg() - 5, Math.min(priors.pitchLimitDeg() + 5, q[1]));
+                    q[3] = Math.max(priors.hfovMinDeg() * 0.97, Math.min(Math.min(179, priors.hfovMaxDeg() * 1.03), q[3]));
+                    double[] rq = residualsPx(hyp(q), s, w, h, profile);
+                    double cq = truncatedCost(rq, s.w(), t);
+                    if (cq < cost) {
+                        improved = true;
+                        double moved = 0;
+                        for (int k = 0; k < 4; k++) {
+                            moved = Math.max(moved, Math.abs(q[k] - p[k]));
+                        }
+                        p = q;
+                        r = rq;
+                        cost = cq;
+                        lambda = Math.max(1e-7, lambda / 3);
+                        if (moved < 1e-5) {
+                            iter = Integer.MAX_VALUE - 1;
+                        }
+                    } else {
+                        lambda *= 8;
+                    }
+                }
+                if (!improved) {
+                    break;
+                }
+            }
+        }
+        double[] r = residualsPx(hyp(p), s, w, h, profile);
+        return new Hypothesis(normalize360(p[0]), p[1], p[2], p[3], score(r, s.w(), TRUNCATION_PX));
+    }
+
+    private static Hypothesis hyp(double[] p) {
+        return new Hypothesis(p[0], p[1], p[2], p[3], Double.NaN);
+    }
+
+    /**
+     * Per sample, the photo's skyline minus the rendered skyline along the elevation, in photo pixels (NaN where
+     * the rendered skyline is unknown), for a hypothesis.
+     */
+    static double[] residualsPx(Hypothesis hyp, Samples s, int w, int h, HorizonProfile profile) {
+        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(w, h, hyp.hfovDeg());
+        CameraView view = new CameraView(k, new CameraOrientation(hyp.headingDeg(),
+                Math.max(-90, Math.min(90, hyp.pitchDeg())), hyp.rollDeg()));
+        double pxPerRad = k.fxPx();
+        double[] ray = new double[3];
+        double[] out = new double[s.size()];
+        for (int i = 0; i < out.length; i++) {
+            view.rayOf(s.x()[i], s.y()[i], ray);
+            double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
+            double el = Math.atan2(ray[2], Math.hypot(ray[0], ray[1]));
+            out[i] = (el - Math.toRadians(profile.elevationDeg(az))) * pxPerRad;
+        }
+        return out;
+    }
+
+    static double truncatedCost(double[] r, double[] w, double t) {
+        double c = 0;
+        for (int i = 0; i < r.length; i++) {
+            double a = Math.abs(r[i]);
+            c += w[i] * (a < t ? a * a : t * t);
+        }
+        return c;
+    }
+
+    /** Mean truncated absolute residual over the truncation, weighted: 0 perfect, 1 nothing fits. */
+    static double score(double[] r, double[] w, double t) {
+        double c = 0, sw = 0;
+        for (int i = 0; i < r.length; i++) {
+            double a = Math.abs(r[i]);
+            c += w[i] * (a < t ? a / t : 1);
+            sw += w[i];
+        }
+        return c / sw;
+    }
+
+    /** The k-th smallest of the first n values (Hoare's selection; reorders them). */
+    static double select(double[] a, int n, int k) {
+        int lo = 0, hi = n - 1;
+        while (lo < hi) {
+            double pivot = a[(lo + hi) >>> 1];
+            int i = lo, j = hi;
+            while (i <= j) {
+                while (a[i] < pivot) {
+                    i++;
+                }
+                while (a[j] > pivot) {
+                    j--;
+                }
+                if (i <= j) {
+                    double t = a[i];
+                    a[i] = a[j];
+                    a[j] = t;
+                    i++;
+                    j--;
+                }
+            }
+            if (k <= j) {
+                hi = j;
+            } else if (k >= i) {
+                lo = i;
+            } else {
+                return a[k];
+            }
+        }
+        return a[k];
+    }
+
+    private static double clamp(double v, double limit) {
+        return Math.max(-limit, Math.min(limit, v));
+    }
+
+    static double headingGap(double a, double b) {
+        double d = Math.abs(normalize360(a) - normalize360(b));
+        return Math.min(d, 360 - d);
+    }
+
+    static double normalize360(double deg) {
+        double d = deg % 360;
+        if (d < 0) {
+            d += 360;
+        }
+        return d >= 360 ? 0 : d;
+    }
+
+    /** Gaussian elimination with partial pivoting; null when singular. */
+    private static double[] solve(double[][] m, double[] b) {
+        int n = b.length;
+        double[][] a = new double[n][];
+        for (int i = 0; i < n; i++) {
+            a[i] = java.util.Arrays.copyOf(m[i], n + 1);
+            a[i][n] = b[i];
+        }
+        for (int c = 0; c < n; c++) {
+            int piv = c;
+            for (int r = c + 1; r < n; r++) {
+                if (Math.abs(a[r][c]) > Math.abs(a[piv][c])) {
+                    piv = r;
+                }
+            }
+            if (Math.abs(a[piv][c]) < 1e-15) {
+                return null;
+            }
+            double[] t = a[c];
+            a[c] = a[piv];
+            a[piv] = t;
+            for (int r = 0; r < n; r++) {
+                if (r != c) {
+                    double f = a[r][c] / a[c][c];
+                    for (int k = c; k <= n; k++) {
+                        a[r][k] -= f * a[c][k];
+                    }
+                }
+            }
+        }
+        double[] x = new double[n];
+        for (int i = 0; i < n; i++) {
+            x[i] = a[i][n] / a[i][i];
+        }
+        return x;
+    }
+}

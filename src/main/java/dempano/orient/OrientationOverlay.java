@@ -1,0 +1,66 @@
+package dempano.orient;
+
+import dempano.camera.CameraIntrinsics;
+import dempano.camera.CameraOrientation;
+import dempano.camera.CameraView;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Path2D;
+import java.awt.image.BufferedImage;
+
+/**
+ * The match drawn on the photo: the rendered skyline projected with the estimate (red) over the skyline found in
+ * the photo (yellow dots), and the estimate as text.
+ */
+public final class OrientationOverlay {
+    private OrientationOverlay() {
+    }
+
+    public static BufferedImage draw(BufferedImage photo, Skyline sky, HorizonProfile profile, OrientationEstimate e) {
+        int w = photo.getWidth(), h = photo.getHeight();
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = out.createGraphics();
+        g.drawImage(photo, 0, 0, null);
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(Color.YELLOW);
+        for (int x = 0; x < w; x += 2) {
+            if (!Double.isNaN(sky.row(x))) {
+                g.fillRect(x, (int) Math.round(sky.row(x)), 1, 1);
+            }
+        }
+        CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, e.hfovDeg()),
+                new CameraOrientation(e.headingDeg(), Math.max(-90, Math.min(90, e.pitchDeg())), e.rollDeg()));
+        // Walk the rendered skyline over the azimuths the photo spans (with a margin for roll).
+        double half = e.hfovDeg() / 2 + 10;
+        Path2D.Double path = new Path2D.Double();
+        boolean open = false;
+        double[] px = new double[2];
+        double step = 0.25 / profile.pixelsPerDegree();
+        for (double az = e.headingDeg() - half; az <= e.headingDeg() + half; az += step) {
+            double el = profile.elevationDeg(az);
+            double a = Math.toRadians(az), t = Math.toRadians(el);
+            view.pixelOf(Math.sin(a) * Math.cos(t), Math.cos(a) * Math.cos(t), Math.sin(t), px);
+            boolean in = Double.isFinite(px[0]) && px[0] >= -1 && px[0] <= w && px[1] >= -h && px[1] <= 2 * h;
+            if (in && open) {
+                path.lineTo(px[0], px[1]);
+            } else if (in) {
+                path.moveTo(px[0], px[1]);
+            }
+            open = in;
+        }
+        g.setColor(new Color(255, 40, 40));
+        g.setStroke(new BasicStroke(1.5f));
+        g.draw(path);
+        g.setColor(new Color(0, 0, 0, 150));
+        g.fillRect(0, h - 18, w, 18);
+        g.setColor(e.unsure() ? Color.ORANGE : Color.WHITE);
+        g.setFont(g.getFont().deriveFont(11f));
+        g.drawString(String.format(java.util.Locale.ROOT, "hdg %.2f° pitch %.2f° roll %.2f° hfov %.1f°  res %.1f px  fit %.0f%%%s",
+                e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), e.residualPx(), 100 * e.inlierShare(),
+                e.unsure() ? "  UNSURE" : ""), 4, h - 5);
+        g.dispose();
+        return out;
+    }
+}

@@ -1,0 +1,60 @@
+package dempano.orient;
+
+import dempano.camera.CameraIntrinsics;
+import dempano.camera.CameraOrientation;
+import dempano.camera.CameraView;
+import java.util.function.DoubleUnaryOperator;
+
+/** Skylines of an analytic horizon seen by a known camera: the truth the estimator tests compare with. */
+final class SyntheticSkyline {
+    private SyntheticSkyline() {
+    }
+
+    /** A rugged, non-periodic horizon: elevation (degrees) of azimuth (degrees). */
+    static double ridge(double azDeg) {
+        double a = Math.toRadians(azDeg);
+        return 4 + 2.5 * Math.sin(3 * a + 0.3) + 1.6 * Math.sin(7 * a + 1.1) + 0.9 * Math.sin(17 * a + 2.0)
+                + 0.5 * Math.sin(41 * a + 0.7) + 0.25 * Math.sin(97 * a + 1.9);
+    }
+
+    static HorizonProfile profile(DoubleUnaryOperator horizon, double ppd) {
+        int n = (int) Math.round(360 * ppd);
+        double[] el = new double[n];
+        for (int c = 0; c < n; c++) {
+            el[c] = horizon.applyAsDouble((c + 0.5) / ppd);
+        }
+        return new HorizonProfile(el, ppd);
+    }
+
+    /** The exact skyline row per column for a camera (bisection on the row), weight 1. */
+    static Skyline project(DoubleUnaryOperator horizon, int w, int h, CameraOrientation o, double hfovDeg) {
+        CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
+        double[] rows = new double[w], weight = new double[w];
+        double[] ray = new double[3];
+        for (int x = 0; x < w; x++) {
+            double lo = -0.5, hi = h - 0.5;
+            if (above(view, horizon, x, lo, ray) == above(view, horizon, x, hi, ray)) {
+                rows[x] = Double.NaN;
+                continue;
+            }
+            for (int k = 0; k < 60; k++) {
+                double mid = (lo + hi) / 2;
+                if (above(view, horizon, x, mid, ray)) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            rows[x] = (lo + hi) / 2;
+            weight[x] = 1;
+        }
+        return new Skyline(w, h, rows, weight);
+    }
+
+    private static boolean above(CameraView view, DoubleUnaryOperator horizon, int x, double y, double[] ray) {
+        view.rayOf(x, y, ray);
+        double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
+        double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
+        return el > horizon.applyAsDouble(az);
+    }
+}
