@@ -13,12 +13,8 @@ import dempano.batch.ViewpointCsvException;
 import dempano.dem.DemDirectory;
 import dempano.dem.DemSource;
 import dempano.dem.PriorityDem;
-import dempano.geo.Refraction;
 import dempano.io.IoMessages;
 import dempano.io.PanoramaWriter;
-import dempano.panorama.DepthMode;
-import dempano.panorama.ElevationRange;
-import dempano.panorama.Layer;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -26,10 +22,8 @@ import java.nio.file.Path;
 import java.text.DecimalFormat;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
@@ -71,44 +65,9 @@ public final class BatchCommand implements Callable<Integer> {
     @Option(names = "--dem-dir", required = true, paramLabel = "DIR", description = "Directory of DEM tiles (.hgt, GeoTIFF); "
             + "repeatable, in priority order, as for a single panorama.")
     List<Path> demDirs;
-    @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}; column ppd).", defaultValue = "20")
-    double ppd;
-    @Option(names = "--range-km", description = "Range of sight, km (default: ${DEFAULT-VALUE}; column range_km).", defaultValue = "100")
-    double rangeKm;
-    @Option(names = "--offset-m", description = "Altitude correction added to the DEM height, metres (default: ${DEFAULT-VALUE}; column offset_m).", defaultValue = "0")
-    double offsetMetres;
-    @Option(names = "--eye-height-m", description = "Eye above the standing altitude, metres (default: ${DEFAULT-VALUE}; column eye_height_m).", defaultValue = "2")
-    double eyeHeightMetres;
-    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient k; 0 = off (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
-    double refraction;
-    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP|auto", description = "Elevation angles covered, degrees (default: ${DEFAULT-VALUE}).", defaultValue = "-30:30")
-    String elevationRange;
-    @Option(names = "--depth-mode", paramLabel = "MODE", description = "shader (default), reversed32f or standard24.", defaultValue = "shader")
-    String depthMode;
-    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, as for a single panorama.")
-    Set<String> layers;
-    @Option(names = "--pfm", description = "Write distance maps as .pfm instead of .npy.")
-    boolean pfm;
-    @Option(names = "--near-m", description = "Near plane, metres (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    double nearMetres;
-    @Option(names = "--supersampling", description = "View pixels per panorama pixel, linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    double supersampling;
-    @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
-    int views;
-    @Option(names = "--lod-px", paramLabel = "PX", description = "Level-of-detail screen error bound, pixels (default: ${DEFAULT-VALUE}).",
-            defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)
-    double lodErrorPx;
-    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Measure every pixel's distance along its own centre ray (default). --no-exact-distances interpolates the views' depth: faster, tens of per cent off at grazing incidence.")
-    boolean exactDistances;
-    @Option(names = "--no-colour", description = "Distances only.")
-    boolean noColour;
-    @Option(names = "--no-distance", description = "Colour only.")
-    boolean noDistance;
-    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent (default: ${DEFAULT-VALUE}); as for a single panorama.", defaultValue = "auto")
-    String missingTiles;
-    @Option(names = "--renderer", paramLabel = "opengl|reference", description = "opengl (default) or reference (CPU).", defaultValue = "opengl")
-    String renderer;
+    /** The main command's panorama options: every row's defaults (its columns override ppd, range, offset, eye height). */
+    @picocli.CommandLine.Mixin
+    PanoramaOptions panorama = new PanoramaOptions();
     @Option(names = "--progress", description = "Show the progress bar even when the terminal is not detected (it is shown on a terminal anyway).")
     boolean progress;
 
@@ -116,7 +75,8 @@ public final class BatchCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintStream err = System.err;
         PanoramaRequest defaults = defaults();
-        boolean reference = Main.referenceRenderer(renderer);
+        boolean reference = panorama.referenceRenderer();
+        dempano.dem.VoidFill fill = panorama.voidFillMethod();
         ViewpointCsv.Parsed parsed;
         try {
             parsed = ViewpointCsv.read(viewpoints, defaults);
@@ -130,11 +90,11 @@ public final class BatchCommand implements Callable<Integer> {
         }
         List<DemDirectory> sources = new ArrayList<>();
         for (Path d : demDirs) {
-            DemDirectory one = new DemDirectory(d); // a missing DEM folder: exit 1 before anything is created
+            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill); // a missing DEM folder: exit 1 before anything is created
             one.warnings().forEach(w -> err.println("  warning: " + w));
             sources.add(one);
         }
-        DemSource dem = PriorityDem.of(sources);
+        DemSource dem = PriorityDem.of(sources, fill);
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {
@@ -151,7 +111,7 @@ public final class BatchCommand implements Callable<Integer> {
         BatchSummary summary;
         java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
-            BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(pfm, null,
+            BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(panorama.pfm, null,
                     dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
             Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");
             Runtime.getRuntime().addShutdownHook(hook);
@@ -199,21 +159,9 @@ public final class BatchCommand implements Callable<Integer> {
         }
     }
 
-    /** The request every row starts from: the options. */
+    /** The request every row starts from: the options (checked here at (0, 0): a bad option is a bad argument, exit 2, before any row is read). */
     PanoramaRequest defaults() {
-        Set<Layer> wanted = EnumSet.noneOf(Layer.class);
-        if (layers != null) {
-            for (String s : layers) {
-                wanted.add(Layer.fromName(s.trim()));
-            }
-        }
-        // Checked here at (0, 0): a bad option is a bad argument (exit 2) before any row is read.
-        return PanoramaRequest.at(0, 0).withOffsetMetres(offsetMetres).withEyeHeightMetres(eyeHeightMetres)
-                .withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd).withElevationRange(ElevationRange.parse(elevationRange))
-                .withRefraction(new Refraction(refraction)).withDepthMode(DepthMode.fromOptionName(depthMode))
-                .withLayers(wanted).withNearMetres(nearMetres).withSupersampling(supersampling).withViews(views)
-                .withMissingTiles(Main.missingTilePolicy(missingTiles)).withLodErrorPx(lodErrorPx)
-                .withExactDistances(exactDistances).withColour(!noColour).withDistance(!noDistance);
+        return panorama.applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
     }
 
     /** One line per row (for logs and pipes). */

@@ -5,19 +5,14 @@ import dempano.PanoramaRequest;
 import dempano.dem.DemDirectory;
 import dempano.dem.DemException;
 import dempano.dem.DemoTerrain;
-import dempano.dem.MissingTilePolicy;
-import dempano.geo.Refraction;
 import dempano.io.OutputSet;
 import dempano.io.PanoramaWriter;
-import dempano.panorama.DepthMode;
-import dempano.panorama.ElevationRange;
 import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
 import dempano.render.GlUnavailableException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
@@ -43,32 +38,11 @@ public final class Main implements Callable<Integer> {
     List<Path> demDirs;
     @Option(names = "--out", paramLabel = "PREFIX", description = "Output prefix (default: ${DEFAULT-VALUE}).", defaultValue = "build/panorama/panorama")
     String out;
-    @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}).", defaultValue = "20")
-    double ppd;
-    @Option(names = "--range-km", description = "Range of sight, km (default: 100; demo scene: 60).")
-    Double rangeKm;
-    @Option(names = "--offset-m", description = "Signed altitude correction added to the DEM height at the viewpoint, metres (default: ${DEFAULT-VALUE}).", defaultValue = "0")
-    double offsetMetres;
+    /** The options every panorama command shares (dempano batch and the Spark job too). */
+    @CommandLine.Mixin
+    PanoramaOptions panorama = new PanoramaOptions();
     @Option(names = "--altitude-m", description = "Absolute standing altitude, metres above sea level, instead of the DEM height (+ offset).")
     Double altitudeMetres;
-    @Option(names = "--eye-height-m", description = "Eye above the standing altitude, metres (default: ${DEFAULT-VALUE}).", defaultValue = "2")
-    double eyeHeightMetres;
-    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient k: apparent lift k·d²/2R; 0 = off (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
-    double refraction;
-    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP|auto", description = "Elevation angles covered, degrees (default: ${DEFAULT-VALUE}); auto crops to the terrain.", defaultValue = "-30:30")
-    String elevationRange;
-    @Option(names = "--depth-mode", paramLabel = "MODE", description = "shader (exact float range, default), reversed32f (reversed-Z float depth), standard24 (the thesis's 24-bit linearization).", defaultValue = "shader")
-    String depthMode;
-    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, comma-separated: elevation, latitude, longitude, ground-distance, incidence (degrees between ray and terrain), uncertainty (metres of distance error from SRTM's 10 m vertical error).")
-    Set<String> layers;
-    @Option(names = "--pfm", description = "Write the distance map as .pfm instead of .npy.")
-    boolean pfm;
-    @Option(names = "--near-m", description = "Near plane, metres (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    double nearMetres;
-    @Option(names = "--supersampling", description = "View pixels per panorama pixel, linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    double supersampling;
-    @Option(names = "--views", description = "Number of perspective views (default: ${DEFAULT-VALUE}).", defaultValue = "8")
-    int views;
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (.txt as de Ferranti's alps.txt, .csv name,lat,lon,elevation, .geojson OSM peaks): writes P-summits.json, P-summits.csv and P-labels.png.")
     Path summitsFile;
 
@@ -87,31 +61,15 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--lenient-summits", description = "Skip bad lines of the summit list (reported) instead of failing.")
     boolean lenientSummits;
 
-    @Option(names = "--renderer", paramLabel = "opengl|reference", description = "opengl (default; GPU or Mesa llvmpipe) or reference (exact CPU horizon sweep, no OpenGL needed; slower).", defaultValue = "opengl")
-    String renderer;
 
     @Option(names = "--repeat", description = "Render this many times in one process and print a timing table (cold = run 1, warm = the rest); files are written once (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     int repeat;
-    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Measure every pixel's distance along its own centre ray (exact at grazing incidence and at silhouettes; default). --no-exact-distances interpolates the views' depth instead: faster, but tens of per cent off at grazing incidence.")
-    boolean exactDistances;
 
-    @Option(names = "--lod-px", paramLabel = "PX", description = "Bound on the screen error of simplified distant terrain, panorama pixels; 0 = full resolution everywhere (default: ${DEFAULT-VALUE}).", defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX)
-    double lodErrorPx;
-    @Option(names = "--no-colour", description = "Distances only: skip shading and the colour image (P.png, P-labels.png).")
-    boolean noColour;
-    @Option(names = "--no-distance", description = "Colour only: skip the distance map (P-distance.*); its silhouette lines come from the nearest view samples. Not with --layers or --summits.")
-    boolean noDistance;
-    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent: auto (default: sea level, 0 m, with a warning for tiles beside the data, as at coasts; an error when no needed tile is present, or the viewpoint's own tile is missing and --altitude-m is not given), sea (every missing tile is sea level, with a warning) or error (fail, listing every missing tile).", defaultValue = "auto")
-    String missingTiles;
 
     @Option(names = "--snap-to-summit-m", paramLabel = "R", description = "Move the viewpoint to the highest DEM point within R metres (a surveyed summit beside the DEM's own); the move is reported.")
     Double snapToSummitMetres;
     @Option(names = "--clear-view-m", paramLabel = "R", description = "Raise the eye until no terrain within R metres rises above its horizontal (+0.5 m); the lift is reported.")
     Double clearViewMetres;
-    @Option(names = "--void-fill", paramLabel = "thin-plate|laplace|idw", defaultValue = "thin-plate",
-            description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the previous default). Compared on surveyed summits in docs/void-fill.md.")
-    String voidFill;
 
     public static void main(String[] args) {
         System.exit(run(args));
@@ -158,25 +116,6 @@ public final class Main implements Callable<Integer> {
         return cl;
     }
 
-    /** The value of {@code --missing-tiles} (auto, sea, error). */
-    static MissingTilePolicy missingTilePolicy(String option) {
-        return switch (option.toLowerCase(Locale.ROOT)) {
-            case "auto" -> MissingTilePolicy.AUTO;
-            case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;
-            case "error" -> MissingTilePolicy.ERROR;
-            default -> throw new IllegalArgumentException("--missing-tiles must be auto, sea or error, got " + option);
-        };
-    }
-
-    /** True for {@code --renderer reference} (or cpu), false for opengl (or gl). */
-    static boolean referenceRenderer(String option) {
-        return switch (option.toLowerCase(Locale.ROOT)) {
-            case "opengl", "gl" -> false;
-            case "reference", "cpu" -> true;
-            default -> throw new IllegalArgumentException("--renderer must be opengl or reference, got " + option);
-        };
-    }
-
     /** The way out of an out-of-memory failure, with the heap size in use. */
     static String outOfMemoryMessage(OutOfMemoryError e) {
         return String.format(Locale.ROOT, "out of memory (%s; Java heap limit %.1f GB): lower --ppd, --elevation-range "
@@ -196,21 +135,9 @@ public final class Main implements Callable<Integer> {
         }
         List<Path> dirs = demo ? List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
-        double range = rangeKm != null ? rangeKm * 1000 : (demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES);
-        Set<Layer> wanted = EnumSet.noneOf(Layer.class);
-        if (layers != null) {
-            for (String s : layers) {
-                wanted.add(Layer.fromName(s.trim()));
-            }
-        }
-        MissingTilePolicy policy = missingTilePolicy(missingTiles);
-        PanoramaRequest req = PanoramaRequest.at(lat, lon).withOffsetMetres(offsetMetres)
+        Set<Layer> wanted = panorama.layers();
+        PanoramaRequest req = panorama.applyTo(PanoramaRequest.at(lat, lon), demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES)
                 .withAltitudeMetres(altitudeMetres == null ? Double.NaN : altitudeMetres)
-                .withEyeHeightMetres(eyeHeightMetres).withRangeMetres(range).withPixelsPerDegree(ppd)
-                .withElevationRange(ElevationRange.parse(elevationRange)).withRefraction(new Refraction(refraction))
-                .withDepthMode(DepthMode.fromOptionName(depthMode)).withLayers(wanted).withNearMetres(nearMetres)
-                .withSupersampling(supersampling).withViews(views).withMissingTiles(policy)
-                .withLodErrorPx(lodErrorPx).withExactDistances(exactDistances).withColour(!noColour).withDistance(!noDistance)
                 .withSnapToSummitMetres(snapToSummitMetres == null ? Double.NaN : snapToSummitMetres)
                 .withClearViewMetres(clearViewMetres == null ? Double.NaN : clearViewMetres);
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
@@ -218,7 +145,7 @@ public final class Main implements Callable<Integer> {
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
-        dempano.dem.VoidFill fill = dempano.dem.VoidFill.parse(voidFill);
+        dempano.dem.VoidFill fill = panorama.voidFillMethod();
         List<DemDirectory> demSources = new java.util.ArrayList<>();
         for (Path d : dirs) {
             DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill);
@@ -235,7 +162,7 @@ public final class Main implements Callable<Integer> {
                             + labelOrder);
                 });
         dempano.summits.SummitList summitList = null;
-        if (summitsFile != null && noDistance) {
+        if (summitsFile != null && panorama.noDistance) {
             throw new IllegalArgumentException("--summits needs the distance map (visibility is decided from it): drop --no-distance");
         }
         if (summitsFile != null) {
@@ -256,8 +183,8 @@ public final class Main implements Callable<Integer> {
         if (repeat < 1 || repeat > 1000) {
             throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
         }
-        boolean reference = referenceRenderer(renderer);
-        PanoramaWriter.Options writing = new PanoramaWriter.Options(pfm, summitList == null ? null : java.util.List.of(),
+        boolean reference = panorama.referenceRenderer();
+        PanoramaWriter.Options writing = new PanoramaWriter.Options(panorama.pfm, summitList == null ? null : java.util.List.of(),
                 labelOptions);
         long t0 = System.nanoTime();
         java.util.List<java.nio.file.Path> files;
@@ -266,7 +193,7 @@ public final class Main implements Callable<Integer> {
         // after any failure the previous outputs stay as they were.
         try (OutputSet set = OutputSet.open(out)) {
             set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
-            System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, range / 1000, dem.describe());
+            System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, req.rangeMetres() / 1000, dem.describe());
             java.util.List<String> table = new java.util.ArrayList<>();
             try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
                 System.err.println("  renderer: " + r.glRenderer());
@@ -291,7 +218,7 @@ public final class Main implements Callable<Integer> {
             }
             java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null
                     : dempano.summits.SummitProjector.withDem(p.summits(summitList), dem);
-            files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(pfm, sightings, labelOptions));
+            files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(panorama.pfm, sightings, labelOptions));
             set.commit();
             if (sightings != null) {
                 System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),

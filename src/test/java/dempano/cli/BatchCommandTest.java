@@ -46,6 +46,25 @@ class BatchCommandTest {
         return String.format(Locale.ROOT, "%.6f", v);
     }
 
+    /** The panorama options are declared once: dempano and dempano batch take the same ones, with the same defaults. */
+    @Test
+    void batchTakesEveryPanoramaOptionOfTheMainCommandWithItsDefault() {
+        picocli.CommandLine.Model.CommandSpec main = new picocli.CommandLine(new Main()).getCommandSpec();
+        picocli.CommandLine.Model.CommandSpec batch = new picocli.CommandLine(new BatchCommand()).getCommandSpec();
+        picocli.CommandLine.Model.CommandSpec shared = new picocli.CommandLine(new PanoramaOptions()).getCommandSpec();
+        assertTrue(shared.options().size() >= 19, "panorama options: " + shared.options().size());
+        for (picocli.CommandLine.Model.OptionSpec o : shared.options()) {
+            for (picocli.CommandLine.Model.CommandSpec spec : List.of(main, batch)) {
+                picocli.CommandLine.Model.OptionSpec there = spec.findOption(o.longestName());
+                assertTrue(there != null, spec.name() + " lacks " + o.longestName());
+                assertEquals(o.defaultValue(), there.defaultValue(), o.longestName() + " default in " + spec.name());
+            }
+        }
+        // A bad value is the same bad argument in both (exit 2), named in the message.
+        assertEquals(2, Main.run("--void-fill", "kriging"));
+        assertEquals(2, Main.run("batch", "x.csv", "--out-dir", "o", "--dem-dir", "d", "--void-fill", "kriging"));
+    }
+
     @Test
     void oneBadRowIsReportedInOneLineTheRestAreDoneAndEqualSingleRuns(@TempDir Path d) throws IOException {
         String lat = coordinate(vp[0]), lon = coordinate(vp[1]);

@@ -96,9 +96,9 @@ final class ExecutorRenderer {
     private static DemSource dem(JobSettings s) {
         List<DemDirectory> dirs = new ArrayList<>();
         for (String d : s.demDirs) {
-            dirs.add(new DemDirectory(localDem(d, s)));
+            dirs.add(new DemDirectory(localDem(d, s), DemDirectory.DEFAULT_CACHED_TILES, s.panorama.voidFillMethod()));
         }
-        return PriorityDem.of(dirs);
+        return PriorityDem.of(dirs, s.panorama.voidFillMethod());
     }
 
     /**

@@ -3,6 +3,7 @@ package dempano.spark;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import dempano.cli.PanoramaOptions;
 import java.util.concurrent.Callable;
 import org.apache.spark.sql.SparkSession;
 import picocli.CommandLine;
@@ -37,68 +38,16 @@ public final class SparkBatchMain implements Callable<Integer> {
     int partitions;
     @Option(names = "--seed", description = "Seed of --order random (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     long seed;
-    @Option(names = "--ppd", defaultValue = "20", description = "Pixels per degree (default: ${DEFAULT-VALUE}; column ppd).")
-    double ppd;
-    @Option(names = "--range-km", defaultValue = "100", description = "Range of sight, km (default: ${DEFAULT-VALUE}; column range_km).")
-    double rangeKm;
-    @Option(names = "--offset-m", defaultValue = "0", description = "Altitude correction, metres (default: ${DEFAULT-VALUE}; column offset_m).")
-    double offsetMetres;
-    @Option(names = "--eye-height-m", defaultValue = "2", description = "Eye above the standing altitude, metres (default: ${DEFAULT-VALUE}; column eye_height_m).")
-    double eyeHeightMetres;
-    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13", description = "Refraction coefficient (default: ${DEFAULT-VALUE}).")
-    double refraction;
-    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP|auto", defaultValue = "-30:30", description = "Elevation angles, degrees (default: ${DEFAULT-VALUE}).")
-    String elevationRange;
-    @Option(names = "--depth-mode", paramLabel = "MODE", defaultValue = "shader", description = "shader (default), reversed32f or standard24.")
-    String depthMode;
-    @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers.")
-    List<String> layers;
-    @Option(names = "--pfm", description = "Distance maps as .pfm instead of .npy.")
-    boolean pfm;
-    @Option(names = "--near-m", defaultValue = "1", description = "Near plane, metres (default: ${DEFAULT-VALUE}).")
-    double nearMetres;
-    @Option(names = "--supersampling", defaultValue = "1", description = "View pixels per panorama pixel (default: ${DEFAULT-VALUE}).")
-    double supersampling;
-    @Option(names = "--views", defaultValue = "8", description = "Perspective views (default: ${DEFAULT-VALUE}).")
-    int views;
-    @Option(names = "--lod-px", paramLabel = "PX", defaultValue = "" + dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX,
-            description = "Level-of-detail screen error bound, pixels (default: ${DEFAULT-VALUE}).")
-    double lodErrorPx;
-    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Every pixel's distance along its own ray (default); --no-exact-distances interpolates.")
-    boolean exactDistances;
-    @Option(names = "--no-colour", description = "Distances only.")
-    boolean noColour;
-    @Option(names = "--no-distance", description = "Colour only.")
-    boolean noDistance;
-    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", defaultValue = "auto", description = "A needed tile that is absent (default: ${DEFAULT-VALUE}).")
-    String missingTiles;
-    @Option(names = "--renderer", paramLabel = "opengl|reference", defaultValue = "opengl", description = "opengl (default) or reference (CPU).")
-    String renderer;
+    /** The panorama options of {@code dempano} and {@code dempano batch}: every row's defaults. */
+    @CommandLine.Mixin
+    PanoramaOptions panorama = new PanoramaOptions();
 
     /** The job settings from the options. */
     JobSettings settings() {
         JobSettings s = new JobSettings();
         s.demDirs = new ArrayList<>(demDirs);
         s.outDir = outDir;
-        s.ppd = ppd;
-        s.rangeKm = rangeKm;
-        s.offsetMetres = offsetMetres;
-        s.eyeHeightMetres = eyeHeightMetres;
-        s.refraction = refraction;
-        s.elevationRange = elevationRange;
-        s.depthMode = depthMode;
-        s.layers = layers == null ? new ArrayList<>() : new ArrayList<>(layers);
-        s.pfm = pfm;
-        s.nearMetres = nearMetres;
-        s.supersampling = supersampling;
-        s.views = views;
-        s.lodErrorPx = lodErrorPx;
-        s.exactDistances = exactDistances;
-        s.colour = !noColour;
-        s.distance = !noDistance;
-        s.missingTiles = missingTiles;
-        s.renderer = renderer;
+        s.panorama = panorama;
         return s;
     }
 
