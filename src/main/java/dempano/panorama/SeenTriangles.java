@@ -11,12 +11,14 @@ package dempano.panorama;
  *
  * @param corners            per triangle 9 doubles: the first vertex, then the two edges from it
  *                           to the second and third vertex
+ * @param skirt              per triangle: true for a skirt's (a vertical wall hung below a patch
+ *                           edge to close cracks between levels of detail): drawn, but not terrain
  * @param triangleOfSample   per view, per sample (GL order, row 0 at the bottom): the index of the
  *                           triangle seen there, −1 where nothing was drawn (sky)
  * @param rangeMetres        the range cut: a point farther than this horizontally from the eye
  *                           (√(x² + z²)) is not drawn, as in the shader
  */
-public record SeenTriangles(double[] corners, int[][] triangleOfSample, double rangeMetres) {
+public record SeenTriangles(double[] corners, boolean[] skirt, int[][] triangleOfSample, double rangeMetres) {
     /**
      * Relative tolerance on the barycentric coordinates: a ray through a shared edge hits one of
      * its two triangles whatever the rounding (the nearer hit is kept, and both are at one distance).
@@ -66,5 +68,18 @@ public record SeenTriangles(double[] corners, int[][] triangleOfSample, double r
         }
         double hx = t * dx, hz = t * dz;
         return hx * hx + hz * hz > rangeMetres * rangeMetres ? Double.POSITIVE_INFINITY : t;
+    }
+
+    /**
+     * Sine of the angle between a unit ray and a triangle's plane: 1 looking straight at it, near 0
+     * at grazing incidence, where a small error of the surface's height is a large error of distance.
+     */
+    public double incidenceSine(int triangle, double dx, double dy, double dz) {
+        double[] c = corners;
+        int o = triangle * 9;
+        double e1x = c[o + 3], e1y = c[o + 4], e1z = c[o + 5], e2x = c[o + 6], e2y = c[o + 7], e2z = c[o + 8];
+        double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        return length > 0 ? Math.abs(nx * dx + ny * dy + nz * dz) / length : 0;
     }
 }

@@ -123,6 +123,13 @@ public final class Stitcher {
         resample(target, layout, captures, null, null, java.util.Objects.requireNonNull(argbOut), nearestRangeOut);
     }
 
+    /**
+     * Below this sine of incidence (about 1.1°) a triangle's hit is searched again on the
+     * full-resolution surface ({@link RayProbe}): there a sag of the simplified surface of d·ε·sin θ
+     * would be a relative distance error ε.
+     */
+    static final double GRAZING_SINE = 0.02;
+
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
     private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                    Exact exact, int[] argbOut, float[] rangeOut) {
@@ -139,7 +146,7 @@ public final class Stitcher {
             double[] p = new double[4];
             double[] ray = new double[3];
             int[] candidates = new int[16];
-            double[] hint = new double[3];
+            double[] hint = new double[4];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int col = 0; col < width; col++) {
                 int view = sampling.locate(col, row, p, ray);
@@ -167,7 +174,18 @@ public final class Stitcher {
                     } else {
                         r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
                     }
-                    if (!Double.isNaN(r)) {
+                    if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && probe != null) {
+                        // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
+                        // distance (and the level of detail leaves the horizon rows unbounded): the full-
+                        // resolution surface decides, searched around the triangle's hit.
+                        double refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
+                        if (refined < Double.POSITIVE_INFINITY) {
+                            r = refined;
+                            rowProbed++;
+                        } else {
+                            rowExact++;
+                        }
+                    } else if (!Double.isNaN(r)) {
                         rowExact++;
                     } else if (probe != null
                             && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500))
@@ -235,7 +253,8 @@ public final class Stitcher {
      * @param candidates a 16-int scratch buffer, overwritten
      * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
      *                   samples (else 0), [1] and [2] the distances to the nearest and the farthest
-     *                   candidate's first corner
+     *                   candidate's first corner; when a distance is returned: [3] the sine of the
+     *                   incidence on the triangle met (1 for sky)
      */
     static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
                              double dz, int[] candidates, double[] hint) {
@@ -246,8 +265,9 @@ public final class Stitcher {
         if (x0 >= 0 && y0 >= 0 && x0 + 1 < w && y0 + 1 < h) {
             int t = tri[y0 * w + x0];
             if (t >= 0 && tri[y0 * w + x0 + 1] == t && tri[(y0 + 1) * w + x0] == t && tri[(y0 + 1) * w + x0 + 1] == t) {
-                double d = seen.distanceAlong(t, dx, dy, dz);
+                double d = seen.skirt()[t] ? Double.POSITIVE_INFINITY : seen.distanceAlong(t, dx, dy, dz);
                 if (d < Double.POSITIVE_INFINITY) {
+                    hint[3] = seen.incidenceSine(t, dx, dy, dz);
                     return d;
                 }
             }
@@ -283,10 +303,18 @@ public final class Stitcher {
             }
         }
         double best = Double.POSITIVE_INFINITY;
+        int met = -1;
         for (int k = 0; k < n; k++) {
-            best = Math.min(best, seen.distanceAlong(candidates[k], dx, dy, dz));
+            double d = seen.distanceAlong(candidates[k], dx, dy, dz);
+            if (d < best) {
+                best = d;
+                met = candidates[k];
+            }
         }
-        if (best < Double.POSITIVE_INFINITY || n == 0) {
+        if (met >= 0 && seen.skirt()[met]) {
+            best = Double.POSITIVE_INFINITY; // a skirt hangs below the surface: the ray went under a simplified patch
+        } else if (best < Double.POSITIVE_INFINITY || n == 0) {
+            hint[3] = met < 0 ? 1 : seen.incidenceSine(met, dx, dy, dz);
             return best;
         }
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;

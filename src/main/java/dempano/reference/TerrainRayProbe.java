@@ -56,12 +56,15 @@ public final class TerrainRayProbe implements RayProbe {
     /** Per level: block rows and columns, and each block's highest sample (NaN until first asked). */
     private final int[] blockRows = new int[LEVELS], blockCols = new int[LEVELS];
     private final float[][] blockMaxima = new float[LEVELS][];
+    /** The reference's vertex placement, for the final intersection with the drawn triangles. */
+    private final ReferenceRenderer.Surface surface;
 
     public TerrainRayProbe(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres) {
         this.mosaic = mosaic;
         this.frame = eye.eyeFrame();
         this.refraction = refraction;
         this.rangeMetres = rangeMetres;
+        this.surface = new ReferenceRenderer.Surface(mosaic, eye, refraction);
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
         double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree();
         this.cellStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
@@ -101,7 +104,7 @@ public final class TerrainRayProbe implements RayProbe {
             double m = Math.max(a, Math.min(b, (a * cb - b * ca) / (cb - ca)));
             double cm = clearance(e, n, u, m, pb);
             if (Double.isNaN(cm) || cm == 0) {
-                return m;
+                return onTriangles(e, n, u, m, horizontalShare, pb);
             }
             if (cm > 0) {
                 a = m;
@@ -119,7 +122,75 @@ public final class TerrainRayProbe implements RayProbe {
                 side = -1;
             }
         }
-        return 0.5 * (a + b);
+        return onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb);
+    }
+
+    /**
+     * The crossing found on the surface as the reference and the GPU draw it: planar triangles
+     * between vertices placed in 3-D (the search's clearance interpolates heights in latitude and
+     * longitude instead, which differs by millimetres to centimetres on steep cells: at grazing
+     * incidence metres of distance). The ray is intersected with the triangles of the cells around
+     * the approximate crossing, two cells either way; the nearest hit there wins, else the approximation.
+     */
+    private double onTriangles(double e, double n, double u, double approximate, double horizontalShare, double[] scratch) {
+        double window = 2 * cellStepMetres / horizontalShare + 1e-3 * approximate;
+        double from = Math.max(1e-3, approximate - window), to = approximate + window;
+        clearance(e, n, u, from, scratch);
+        double rowA = scratch[ROW], colA = scratch[COL];
+        clearance(e, n, u, to, scratch);
+        double rowB = scratch[ROW], colB = scratch[COL];
+        int r0 = Math.max(0, (int) Math.floor(Math.min(rowA, rowB)) - 1), r1 = Math.min(mosaic.rows() - 2, (int) Math.floor(Math.max(rowA, rowB)) + 1);
+        int c0 = Math.max(0, (int) Math.floor(Math.min(colA, colB)) - 1), c1 = Math.min(mosaic.cols() - 2, (int) Math.floor(Math.max(colA, colB)) + 1);
+        if (!(r1 >= r0 && c1 >= c0) || (long) (r1 - r0 + 1) * (c1 - c0 + 1) > 4096) {
+            return approximate;
+        }
+        double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3];
+        double best = Double.POSITIVE_INFINITY;
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                surface.position(r, c, nw);
+                surface.position(r, c + 1, ne);
+                surface.position(r + 1, c, sw);
+                surface.position(r + 1, c + 1, se);
+                double t1, t2;
+                if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
+                    t1 = rayTriangle(e, n, u, nw, ne, se);
+                    t2 = rayTriangle(e, n, u, nw, se, sw);
+                } else {
+                    t1 = rayTriangle(e, n, u, nw, ne, sw);
+                    t2 = rayTriangle(e, n, u, ne, se, sw);
+                }
+                double t = Math.min(t1, t2);
+                if (t >= from && t <= to && t < best) {
+                    best = t;
+                }
+            }
+        }
+        return best < Double.POSITIVE_INFINITY ? best : approximate;
+    }
+
+    /** Distance along the unit ray from the eye (ENU origin) to triangle (p, q, s), Möller–Trumbore; +∞ if missed. */
+    private static double rayTriangle(double dx, double dy, double dz, double[] p, double[] q, double[] s) {
+        double e1x = q[0] - p[0], e1y = q[1] - p[1], e1z = q[2] - p[2];
+        double e2x = s[0] - p[0], e2y = s[1] - p[1], e2z = s[2] - p[2];
+        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+        double det = e1x * px + e1y * py + e1z * pz;
+        if (det == 0 || Double.isNaN(det)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double inv = 1 / det;
+        double tx = -p[0], ty = -p[1], tz = -p[2];
+        double a = (tx * px + ty * py + tz * pz) * inv;
+        if (a < -1e-9 || a > 1 + 1e-9) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
+        double b = (dx * qx + dy * qy + dz * qz) * inv;
+        if (b < -1e-9 || a + b > 1 + 1e-9) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
+        return t > 0 ? t : Double.POSITIVE_INFINITY;
     }
 
     /**

@@ -115,4 +115,46 @@ class GrazingSeaDistanceTest {
         assertTrue(abs[abs.length / 2] < 1e-3, "median: " + summary(lod));
         assertTrue(abs[(int) (abs.length * 0.99)] < 3e-3, "p99: " + summary(lod));
     }
+
+    /**
+     * Issue 16's bound at the defaults (exact per-pixel distances): every sea pixel within 0.1 % of
+     * the closed form, except each column's first sea row (the horizon passes through it: 1 %); a
+     * pixel centre whose ray misses the ellipsoid must be sky, and one that meets it must not.
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(doubles = {2, 100, 2000})
+    void everySeaPixelIsWithinATenthOfAPerCentBelowTheHorizonRow(double eyeMetres) {
+        PanoramaRequest req = PanoramaRequest.at(LAT, LON).withAltitudeMetres(eyeMetres).withEyeHeightMetres(0)
+                .withRangeMetres(eyeMetres > 1000 ? 170_000 : 60_000).withRefraction(Refraction.NONE).withPixelsPerDegree(PPD)
+                .withElevationRange(new ElevationRange(-2, 0.5, false));
+        Panorama p = gl.render(req);
+        LocalFrame eye = new LocalFrame(LAT, LON, eyeMetres);
+        double worstBelow = 0, worstHorizon = 0;
+        int measured = 0, skyMismatch = 0;
+        for (int c = 0; c < p.widthPx(); c++) {
+            int seaRows = 0;
+            for (int r = 0; r < p.heightPx(); r++) {
+                double truth = rayToEllipsoidMetres(eye, p.azimuthOfColumn(c), p.elevationOfRow(r));
+                double read = p.distanceMetres(c, r);
+                if (Double.isInfinite(truth) || Double.isInfinite(read)) {
+                    skyMismatch += Double.isInfinite(truth) == Double.isInfinite(read) ? 0 : 1;
+                    seaRows += Double.isInfinite(truth) ? 0 : 1;
+                    continue;
+                }
+                double error = Math.abs(read - truth) / truth;
+                if (seaRows++ == 0) {
+                    worstHorizon = Math.max(worstHorizon, error);
+                } else {
+                    worstBelow = Math.max(worstBelow, error);
+                    measured++;
+                }
+            }
+        }
+        System.out.printf("eye %.0f m: %d sea px below the horizon row, worst %.2e; horizon row worst %.2e; sky mismatches %d%n",
+                eyeMetres, measured, worstBelow, worstHorizon, skyMismatch);
+        assertTrue(measured > 5000, "sea pixels measured: " + measured);
+        assertTrue(worstBelow <= 1e-3, "worst sea pixel below the horizon row: " + worstBelow);
+        assertTrue(worstHorizon <= 1e-2, "worst pixel of the horizon row: " + worstHorizon);
+        assertTrue(skyMismatch == 0, "pixels sky in one and sea in the other: " + skyMismatch);
+    }
 }
