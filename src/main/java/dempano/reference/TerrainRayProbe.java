@@ -130,28 +130,42 @@ public final class TerrainRayProbe implements RayProbe {
      * between vertices placed in 3-D (the search's clearance interpolates heights in latitude and
      * longitude instead, which differs by millimetres to centimetres on steep cells: at grazing
      * incidence metres of distance). The ray is intersected with the triangles of the cells around
-     * the approximate crossing, two cells either way; the nearest hit there wins, else the approximation.
+     * the approximate crossing, a cell and a half either way; the nearest hit there wins, else the approximation.
      */
     private double onTriangles(double e, double n, double u, double approximate, double horizontalShare, double[] scratch) {
-        double window = 2 * cellStepMetres / horizontalShare + 1e-3 * approximate;
+        double window = 1.5 * cellStepMetres / horizontalShare;
         double from = Math.max(1e-3, approximate - window), to = approximate + window;
         clearance(e, n, u, from, scratch);
         double rowA = scratch[ROW], colA = scratch[COL];
         clearance(e, n, u, to, scratch);
         double rowB = scratch[ROW], colB = scratch[COL];
-        int r0 = Math.max(0, (int) Math.floor(Math.min(rowA, rowB)) - 1), r1 = Math.min(mosaic.rows() - 2, (int) Math.floor(Math.max(rowA, rowB)) + 1);
-        int c0 = Math.max(0, (int) Math.floor(Math.min(colA, colB)) - 1), c1 = Math.min(mosaic.cols() - 2, (int) Math.floor(Math.max(colA, colB)) + 1);
-        if (!(r1 >= r0 && c1 >= c0) || (long) (r1 - r0 + 1) * (c1 - c0 + 1) > 4096) {
+        int r0 = (int) Math.floor(Math.min(rowA, rowB) - 0.05), r1 = (int) Math.floor(Math.max(rowA, rowB) + 0.05);
+        int c0 = (int) Math.floor(Math.min(colA, colB) - 0.05), c1 = (int) Math.floor(Math.max(colA, colB) + 0.05);
+        if (r0 < 0 || c0 < 0 || r1 + 1 >= mosaic.rows() || c1 + 1 >= mosaic.cols() || (r1 - r0 + 2) * (c1 - c0 + 2) > 4096) {
             return approximate;
         }
+        // Vertex positions of the rectangle, computed once each (a vertex serves four cells).
+        int vertexCols = c1 - c0 + 2;
+        double[] vertices = new double[3 * (r1 - r0 + 2) * vertexCols];
+        java.util.Arrays.fill(vertices, Double.NaN);
         double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3];
         double best = Double.POSITIVE_INFINITY;
-        for (int r = r0; r <= r1; r++) {
-            for (int c = c0; c <= c1; c++) {
-                surface.position(r, c, nw);
-                surface.position(r, c + 1, ne);
-                surface.position(r + 1, c, sw);
-                surface.position(r + 1, c + 1, se);
+        // The cells along the path (a straight line in rows and columns over these few cells), with
+        // their neighbours across an edge the path runs along.
+        int samples = (int) Math.ceil(4 * (Math.abs(rowB - rowA) + Math.abs(colB - colA))) + 2;
+        boolean[] done = new boolean[(r1 - r0 + 1) * (c1 - c0 + 1)];
+        for (int i = 0; i <= samples; i++) {
+            double f = (double) i / samples, row = rowA + f * (rowB - rowA), col = colA + f * (colB - colA);
+            for (int k = 0; k < 4; k++) {
+                int r = (int) Math.floor(row + ((k & 1) == 0 ? -0.05 : 0.05)), c = (int) Math.floor(col + ((k & 2) == 0 ? -0.05 : 0.05));
+                if (r < r0 || r > r1 || c < c0 || c > c1 || done[(r - r0) * (c1 - c0 + 1) + (c - c0)]) {
+                    continue;
+                }
+                done[(r - r0) * (c1 - c0 + 1) + (c - c0)] = true;
+                vertex(r, c, r0, c0, vertexCols, vertices, nw);
+                vertex(r, c + 1, r0, c0, vertexCols, vertices, ne);
+                vertex(r + 1, c, r0, c0, vertexCols, vertices, sw);
+                vertex(r + 1, c + 1, r0, c0, vertexCols, vertices, se);
                 double t1, t2;
                 if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
                     t1 = rayTriangle(e, n, u, nw, ne, se);
@@ -167,6 +181,21 @@ public final class TerrainRayProbe implements RayProbe {
             }
         }
         return best < Double.POSITIVE_INFINITY ? best : approximate;
+    }
+
+    /** Vertex (r, c)'s position as the reference places it, from the rectangle's store (filled on first use). */
+    private void vertex(int r, int c, int r0, int c0, int vertexCols, double[] store, double[] out) {
+        int o = 3 * ((r - r0) * vertexCols + (c - c0));
+        if (Double.isNaN(store[o])) {
+            surface.position(r, c, out);
+            store[o] = out[0];
+            store[o + 1] = out[1];
+            store[o + 2] = out[2];
+        } else {
+            out[0] = store[o];
+            out[1] = store[o + 1];
+            out[2] = store[o + 2];
+        }
     }
 
     /** Distance along the unit ray from the eye (ENU origin) to triangle (p, q, s), Möller–Trumbore; +∞ if missed. */
