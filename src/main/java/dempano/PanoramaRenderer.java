@@ -48,18 +48,41 @@ import java.util.function.Consumer;
  */
 public final class PanoramaRenderer implements AutoCloseable {
     private final DemSource dem;
-    private final OffscreenRenderer.Handle handle;
-    private final OffscreenRenderer gl;
+    /** The GL context's handle, being created (see {@link #openInBackground}) or made; null for the CPU reference. */
+    private final java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> handle;
     /** Patch deviations of this DEM source, kept across renders (level of detail costs a lookup then). */
     private final DeviationCache deviations = new DeviationCache();
     /** Fine patches' geometries with their GL buffers, kept across renders; one render uses it at a time. */
     private final MeshCache meshes = new MeshCache();
     private final java.util.concurrent.locks.ReentrantLock meshLock = new java.util.concurrent.locks.ReentrantLock();
 
-    private PanoramaRenderer(DemSource dem, OffscreenRenderer.Handle handle) {
+    private PanoramaRenderer(DemSource dem, java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> handle) {
         this.dem = dem;
         this.handle = handle;
-        this.gl = handle == null ? null : handle.renderer();
+    }
+
+    /** True for the CPU reference renderer (no GL context). */
+    private boolean reference() {
+        return handle == null;
+    }
+
+    /**
+     * The GL renderer, waiting for its context where it is still being created.
+     *
+     * @throws dempano.render.GlUnavailableException as {@link #open} would have
+     */
+    private OffscreenRenderer gl() {
+        try {
+            return handle.join().renderer();
+        } catch (java.util.concurrent.CompletionException e) {
+            if (e.getCause() instanceof RuntimeException re) {
+                throw re;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw e;
+        }
     }
 
     /** Name of the CPU reference renderer, as metadata reports it. */
@@ -88,12 +111,39 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws dempano.render.GlUnavailableException when no OpenGL context can be had (message says why)
      */
     public static PanoramaRenderer open(DemSource dem) {
-        return new PanoramaRenderer(dem, OffscreenRenderer.acquire());
+        return new PanoramaRenderer(dem, java.util.concurrent.CompletableFuture.completedFuture(OffscreenRenderer.acquire()));
+    }
+
+    /**
+     * Opens a renderer whose OpenGL context is created on another thread meanwhile, with the terrain shader's
+     * definition loaded: the first render loads its tiles and builds its mesh while the context starts
+     * (a cold start from the shell: docs/cold-start.md). A failure to create the context is thrown, as by
+     * {@link #open}, by the first call that needs it ({@link #glRenderer()}, a render); {@link #close()} waits
+     * for the context and ends it.
+     */
+    public static PanoramaRenderer openInBackground(DemSource dem) {
+        java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> pending = new java.util.concurrent.CompletableFuture<>();
+        Thread starter = new Thread(() -> {
+            try {
+                OffscreenRenderer.Handle h = OffscreenRenderer.acquire();
+                try {
+                    h.renderer().newTerrainMaterial(1000); // loads the material definition (cached by the asset manager)
+                } catch (RuntimeException e) {
+                    // the render that needs it says so
+                }
+                pending.complete(h);
+            } catch (Throwable t) {
+                pending.completeExceptionally(t);
+            }
+        }, "dempano-gl-start");
+        starter.setDaemon(true);
+        starter.start();
+        return new PanoramaRenderer(dem, pending);
     }
 
     /** The OpenGL renderer in use. */
     public String glRenderer() {
-        return gl == null ? REFERENCE_RENDERER : gl.glRenderer();
+        return reference() ? REFERENCE_RENDERER : gl().glRenderer();
     }
 
     public Panorama render(PanoramaRequest request) {
@@ -114,14 +164,14 @@ public final class PanoramaRenderer implements AutoCloseable {
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
         long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
-        MemoryEstimate.of(req, gl != null, Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
+        MemoryEstimate.of(req, !reference(), Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
                 .check(Runtime.getRuntime().maxMemory());
         Viewpoint requested = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
         Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, requested, req.snapToSummitMetres(),
                 req.clearViewMetres(), req.refraction()));
-        if (gl == null) {
+        if (reference()) {
             return renderReference(req, scene, clock, progress);
         }
         ElevationRange er = req.elevationRange();
@@ -145,7 +195,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      *                                  perspective views
      */
     public CameraImage render(CameraRequest request, Consumer<String> progress) {
-        if (gl == null) {
+        if (reference()) {
             throw new IllegalStateException("the CPU reference renders panoramas only: a camera view needs OpenGL");
         }
         PanoramaRequest req = request.settings();
@@ -225,10 +275,6 @@ public final class PanoramaRenderer implements AutoCloseable {
         Viewpoint eye = scene.eye();
         Mosaic mosaic = scene.mosaic();
         progress.accept("building terrain mesh");
-        Material material = gl.newTerrainMaterial(req.rangeMetres());
-        if (!req.colour()) {
-            material.setBoolean("DistanceOnly", true);
-        }
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
@@ -240,10 +286,22 @@ public final class PanoramaRenderer implements AutoCloseable {
         // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
         boolean withMeshCache = meshLock.tryLock();
         try {
-            TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), material,
+            // Built without a material: the GL context may still be starting (openInBackground). The material
+            // (it needs the context's asset manager) is set on every geometry drawn afterwards.
+            TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), null,
                     new TerrainBuilder.Detail(pixelsPerDegree, req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null,
                             cullBelowDeg));
             clock.lap("mesh");
+            OffscreenRenderer gl = gl();
+            Material material = gl.newTerrainMaterial(req.rangeMetres());
+            if (!req.colour()) {
+                material.setBoolean("DistanceOnly", true);
+            }
+            new EyePlacement(eye, req.refraction()).apply(material);
+            for (com.jme3.scene.Geometry g : terrain.drawn()) {
+                g.setMaterial(material);
+            }
+            clock.lap("context");
             triangles = terrain.triangles();
             progress.accept("rendering " + layout.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                     + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
@@ -426,12 +484,18 @@ public final class PanoramaRenderer implements AutoCloseable {
     @Override
     public void close() {
         if (handle != null) {
+            OffscreenRenderer.Handle h;
+            try {
+                h = handle.join();
+            } catch (java.util.concurrent.CompletionException e) {
+                return; // no context was made: nothing to end
+            }
             meshLock.lock();
             try {
-                gl.release(meshes.clear());
+                h.renderer().release(meshes.clear());
             } finally {
                 meshLock.unlock();
-                handle.close();
+                h.close();
             }
         }
     }

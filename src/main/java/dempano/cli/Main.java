@@ -78,7 +78,7 @@ public final class Main implements Callable<Integer> {
     /** Runs the CLI and returns the exit code (for tests). */
     public static int run(String... args) {
         try {
-            return commandLine().execute(args);
+            return commandLine(args).execute(args);
         } catch (OutOfMemoryError e) {
             // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
             System.err.println("dempano: " + outOfMemoryMessage(e));
@@ -86,11 +86,34 @@ public final class Main implements Callable<Integer> {
         }
     }
 
-    private static CommandLine commandLine() {
+    /** The subcommands' names (picocli builds each one's model, by reflection, when it is added). */
+    static final List<String> SUBCOMMANDS = List.of("fly", "photo", "batch");
+
+    /**
+     * Whether the arguments may name a subcommand or ask for help (which lists them): any argument equal to a
+     * subcommand's name or {@code help}, a help option, or no argument at all. Otherwise the subcommands' models
+     * are not built: a panorama from the shell starts sooner (docs/cold-start.md), and parses as before.
+     */
+    static boolean needsSubcommands(String... args) {
+        if (args.length == 0) {
+            return true;
+        }
+        for (String a : args) {
+            if (SUBCOMMANDS.contains(a) || a.equals("help") || a.equals("--help")
+                    || (a.startsWith("-") && !a.startsWith("--") && a.indexOf('h') > 0)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static CommandLine commandLine(String... args) {
         CommandLine cl = new CommandLine(new Main());
-        cl.addSubcommand("fly", new FlyCommand());
-        cl.addSubcommand("photo", new PhotoCommand());
-        cl.addSubcommand("batch", new BatchCommand());
+        if (needsSubcommands(args)) {
+            cl.addSubcommand("fly", new FlyCommand());
+            cl.addSubcommand("photo", new PhotoCommand());
+            cl.addSubcommand("batch", new BatchCommand());
+        }
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());
@@ -189,17 +212,30 @@ public final class Main implements Callable<Integer> {
         long t0 = System.nanoTime();
         java.util.List<java.nio.file.Path> files;
         Panorama p = null;
+        double writingMillis;
         // The output set is opened before rendering: an unwritable destination is found first, and
         // after any failure the previous outputs stay as they were.
         try (OutputSet set = OutputSet.open(out)) {
             set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
             System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, req.rangeMetres() / 1000, dem.describe());
             java.util.List<String> table = new java.util.ArrayList<>();
-            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
-                System.err.println("  renderer: " + r.glRenderer());
+            // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
+            // name is printed when the views are drawn (asking for it sooner would wait for the context).
+            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
+                boolean[] named = {false};
+                if (reference) {
+                    System.err.println("  renderer: " + r.glRenderer());
+                    named[0] = true;
+                }
                 for (int i = 1; i <= repeat; i++) {
                     long start = System.nanoTime();
-                    p = r.render(req, stage -> System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage));
+                    p = r.render(req, stage -> {
+                        if (!named[0] && stage.startsWith("rendering")) {
+                            System.err.println("  renderer: " + r.glRenderer());
+                            named[0] = true;
+                        }
+                        System.err.printf(Locale.ROOT, "  [%6.1f s] %s%n", (System.nanoTime() - t0) / 1e9, stage);
+                    });
                     table.add(String.format(Locale.ROOT, "| %d | %s | %.0f | %s |", i, i == 1 ? "cold" : "warm",
                             (System.nanoTime() - start) / 1e6, p.metadata().timingsMillis().entrySet().stream()
                                     .map(e -> e.getKey() + " " + Math.round(e.getValue())).collect(java.util.stream.Collectors.joining(", "))));
@@ -218,17 +254,19 @@ public final class Main implements Callable<Integer> {
             }
             java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null
                     : dempano.summits.SummitProjector.withDem(p.summits(summitList), dem);
+            long beforeWriting = System.nanoTime();
             files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(panorama.pfm, sightings, labelOptions));
             set.commit();
+            writingMillis = (System.nanoTime() - beforeWriting) / 1e6;
             if (sightings != null) {
                 System.err.printf(Locale.ROOT, "  summits: %d within range, %d visible%n", sightings.size(),
                         sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
             }
         }
         System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, files);
-        System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms%n",
+        System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms, writing %.0f ms%n",
                 p.metadata().eyeAltitudeMetres(), p.metadata().groundElevationMetres(), p.widthPx(), p.heightPx(),
-                p.metadata().timingsMillis());
+                p.metadata().timingsMillis(), writingMillis);
         return 0;
     }
 }

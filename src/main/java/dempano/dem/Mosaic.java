@@ -208,6 +208,36 @@ public final class Mosaic {
         return ((long) tileRow << 52) | ((long) tileCol << 40) | ((long) localRow << 20) | localCol;
     }
 
+    /**
+     * Heights of {@code count} samples of one row from column {@code col} on, into {@code out} from
+     * {@code offset}: each exactly {@link #sample(int, int)}, read a tile's run at a time.
+     *
+     * @throws IndexOutOfBoundsException for samples outside the mosaic
+     */
+    public void sampleRow(int row, int col, int count, float[] out, int offset) {
+        if (row < 0 || col < 0 || row >= rows || col + count > cols || count < 0) {
+            throw new IndexOutOfBoundsException("samples (" + row + ", " + col + "…+" + count + ") outside the " + rows
+                    + "×" + cols + " mosaic");
+        }
+        int n = intervalsPerDegree, tr = Math.min(row / n, tilesNorthSouth - 1), lr = row - tr * n;
+        int c = col, end = col + count;
+        while (c < end) {
+            int tc = Math.min(c / n, tilesEastWest - 1);
+            HgtTile t = tiles[tr][tc];
+            if (t != null && t.intervalsPerDegree() == n) {
+                // The columns this tile serves (as locate() assigns them): up to its east edge, the last tile's included.
+                int stop = Math.min(end, tc == tilesEastWest - 1 ? cols : (tc + 1) * n);
+                int first = tc * n;
+                for (; c < stop; c++) {
+                    out[offset + c - col] = t.heightMetres(lr, c - first);
+                }
+            } else {
+                out[offset + c - col] = sample(row, c);
+                c++;
+            }
+        }
+    }
+
     /** Height of a sample, metres; NaN where the range circle did not need the tile. */
     public float sample(int row, int col) {
         long at = locate(row, col);

@@ -53,20 +53,43 @@ public final class LevelOfDetail {
         }
         int levels = Integer.numberOfTrailingZeros(intervals);
         double[] dev = new double[levels + 1];
+        // Coarse cell by coarse cell (a sample on a cell's east or south edge belongs to the next cell, except on
+        // the patch's own edge), with the cell's corners and split read once: the same arithmetic, value for
+        // value, as interpolate() at every sample (the largest of the same numbers), without a division per sample.
+        double[] fraction = new double[intervals + 1];
         for (int level = 1; level <= levels; level++) {
-            int s = 1 << level;
+            int s = 1 << level, cells = intervals / s;
+            for (int k = 0; k <= s; k++) {
+                fraction[k] = k / (double) s;
+            }
             double worst = 0;
-            for (int i = 0; i <= intervals; i++) {
-                int ci = Math.min(i / s, intervals / s - 1);
-                double v = (i - ci * s) / (double) s;
-                for (int j = 0; j <= intervals; j++) {
-                    int cj = Math.min(j / s, intervals / s - 1);
-                    double u = (j - cj * s) / (double) s;
-                    int rn = row0 + ci * s, rs = rn + s, cw = col0 + cj * s, ce = cw + s;
-                    double coarse = interpolate(heights[rn * stride + cw], heights[rn * stride + ce],
-                            heights[rs * stride + cw], heights[rs * stride + ce], u, v,
-                            Triangulation.splitsNorthWestToSouthEast(ci, cj));
-                    worst = Math.max(worst, Math.abs(heights[(row0 + i) * stride + col0 + j] - coarse));
+            for (int ci = 0; ci < cells; ci++) {
+                int lastA = ci == cells - 1 ? s : s - 1;
+                int rn = row0 + ci * s, rs = rn + s;
+                for (int cj = 0; cj < cells; cj++) {
+                    int lastB = cj == cells - 1 ? s : s - 1;
+                    int cw = col0 + cj * s, ce = cw + s;
+                    double nw = heights[rn * stride + cw], ne = heights[rn * stride + ce];
+                    double sw = heights[rs * stride + cw], se = heights[rs * stride + ce];
+                    boolean nwToSe = Triangulation.splitsNorthWestToSouthEast(ci, cj);
+                    for (int a = 0; a <= lastA; a++) {
+                        double v = fraction[a];
+                        int at = (rn + a) * stride + cw;
+                        if (nwToSe) {
+                            for (int b = 0; b <= lastB; b++) {
+                                double u = fraction[b];
+                                double coarse = u >= v ? nw + u * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + u * (se - sw);
+                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
+                            }
+                        } else {
+                            for (int b = 0; b <= lastB; b++) {
+                                double u = fraction[b];
+                                double coarse = u + v <= 1 ? nw + u * (ne - nw) + v * (sw - nw)
+                                        : se + (1 - u) * (sw - se) + (1 - v) * (ne - se);
+                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
+                            }
+                        }
+                    }
                 }
             }
             dev[level] = worst;

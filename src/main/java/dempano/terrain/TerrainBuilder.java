@@ -437,9 +437,21 @@ public final class TerrainBuilder {
     private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
         float[] heights = PATCH_HEIGHTS.get(); // reused: tens of thousands of patches per build
-        for (int a = 0; a <= p; a++) {
-            for (int b = 0; b <= p; b++) {
-                heights[a * (p + 1) + b] = drawnHeight(mosaic, row0 + a, col0 + b);
+        if (row0 >= 0 && col0 >= 0 && row0 + p < mosaic.rows() && col0 + p < mosaic.cols()) {
+            // Inside the mosaic (no clamping): a row of samples at a time, as drawnHeight() reads them one by one.
+            for (int a = 0; a <= p; a++) {
+                mosaic.sampleRow(row0 + a, col0, p + 1, heights, a * (p + 1));
+            }
+            for (int k = 0; k < heights.length; k++) {
+                if (Float.isNaN(heights[k])) {
+                    heights[k] = 0f;
+                }
+            }
+        } else {
+            for (int a = 0; a <= p; a++) {
+                for (int b = 0; b <= p; b++) {
+                    heights[a * (p + 1) + b] = drawnHeight(mosaic, row0 + a, col0 + b);
+                }
             }
         }
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);

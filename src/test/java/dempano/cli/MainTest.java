@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -74,5 +75,25 @@ class MainTest {
             assertTrue(r[1].contains(opt), opt + " missing from help");
         }
         assertTrue(r[1].contains("metres") && r[1].contains("degrees") && r[1].contains("default"));
+    }
+
+    @Test
+    void subcommandsAreBuiltWhenNamedOrForHelpOnly() {
+        for (String[] args : new String[][] {{}, {"--help"}, {"-h"}, {"help"}, {"fly", "--help"}, {"batch", "x.csv"},
+                {"--lat", "1", "photo"}, {"photo"}}) {
+            assertTrue(Main.needsSubcommands(args), String.join(" ", args));
+        }
+        for (String[] args : new String[][] {{"--lat", "44.27", "--lon", "-71.3", "--dem-dir", "dem", "--out", "p"},
+                {"--version"}, {"-V"}}) {
+            assertFalse(Main.needsSubcommands(args), String.join(" ", args));
+        }
+        String[] help = run("--help");
+        assertEquals("0", help[0]);
+        for (String sub : Main.SUBCOMMANDS) {
+            assertTrue(help[1].contains(sub), sub + " missing from help");
+        }
+        String[] flyHelp = run("fly", "--help");
+        assertEquals("0", flyHelp[0], flyHelp[1]);
+        assertTrue(flyHelp[1].contains("dempano fly"), flyHelp[1]);
     }
 }

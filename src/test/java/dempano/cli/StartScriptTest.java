@@ -60,6 +60,71 @@ class StartScriptTest {
         assertEquals(1L << 30, given);
     }
 
+    static final Path ARCHIVE = Path.of("build", "install", "dempano", "lib", "dempano.jsa");
+    static final String SHARED = "source: shared objects file";
+
+    /**
+     * installDist's class-data sharing archive holds dempano's classes and is used. A rebuilt jar (newer than the
+     * archive) makes the script leave it out, so the JVM keeps its own; a jar changed in a way the script cannot see
+     * (an older time) makes the JVM refuse it. Either way nothing is printed and the script runs.
+     */
+    @Test
+    void theClassDataArchiveIsUsedAndAChangedJarMakesItBeIgnoredSilently() throws Exception {
+        assertTrue(Files.isRegularFile(ARCHIVE), ARCHIVE + " is made by installDist (a training run on the demo scene)");
+        String[] fresh = run(Map.of("DEMPANO_OPTS", "-Xlog:class+load"), "--version");
+        assertEquals("0", fresh[0], fresh[2]);
+        assertEquals("", fresh[2]);
+        assertTrue(fresh[1].contains("dempano.cli.Main " + SHARED), "dempano's own classes come from the archive");
+
+        Path jar = ARCHIVE.resolveSibling("dempano-0.1.0.jar");
+        java.nio.file.attribute.FileTime was = Files.getLastModifiedTime(jar);
+        try {
+            for (long shiftMillis : new long[] {60_000, -60_000}) {
+                Files.setLastModifiedTime(jar, java.nio.file.attribute.FileTime.fromMillis(was.toMillis() + shiftMillis));
+                String[] stale = run(Map.of("DEMPANO_OPTS", "-Xlog:class+load"), "--version");
+                assertEquals("0", stale[0], stale[2]);
+                assertEquals("", stale[2], "no warning about the stale archive");
+                assertTrue(stale[1].contains("dempano 0.1.0"), stale[1]);
+                assertTrue(stale[1].contains("dempano.cli.Main source: file:"), "a stale archive must not be used");
+                if (shiftMillis > 0) {
+                    assertTrue(stale[1].contains("java.lang.Object " + SHARED), "the JVM's own archive is still used");
+                }
+            }
+        } finally {
+            Files.setLastModifiedTime(jar, was);
+        }
+    }
+
+    /** Without the archive (removed, or never made) the script names none: the JVM keeps its own, and says nothing. */
+    @Test
+    void withoutTheArchiveTheScriptRunsSilentlyOnTheJvmsOwnArchive(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path home = dir.resolve("dempano");
+        Path installed = SCRIPT.getParent().getParent();
+        try (var files = Files.walk(installed)) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                Path to = home.resolve(installed.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(to);
+                } else if (!f.getFileName().toString().equals("dempano.jsa")) {
+                    Files.copy(f, to, java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            }
+        }
+        ProcessBuilder pb = new ProcessBuilder(home.resolve("bin/dempano").toString(), "--version");
+        pb.environment().remove("JAVA_OPTS");
+        pb.environment().put("DEMPANO_OPTS", "-Xlog:class+load");
+        Path err = dir.resolve("err.txt");
+        pb.redirectError(err.toFile());
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue());
+        assertEquals("", Files.readString(err));
+        assertTrue(out.contains("dempano 0.1.0"), out);
+        assertTrue(out.contains("dempano.cli.Main source: file:"), out);
+        assertTrue(out.contains("java.lang.Object " + SHARED), "a missing archive named to the JVM would switch its own off");
+    }
+
     static long maxHeap(String flags) throws IOException {
         Matcher m = Pattern.compile("MaxHeapSize\\s*=\\s*(\\d+)").matcher(flags);
         assertTrue(m.find(), flags);

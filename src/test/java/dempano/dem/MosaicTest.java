@@ -123,6 +123,36 @@ class MosaicTest {
     }
 
     @Test
+    void aRowOfSamplesIsSampleBySample() {
+        // Present, missing (sea level) and unloaded tiles, a void, and a coarser tile beside a finer one.
+        float[] nw = new float[N * N];
+        for (int k = 0; k < nw.length; k++) {
+            nw[k] = 300 + k % 97;
+        }
+        nw[60 * N + 60] = Float.NaN;
+        int fine = 241;
+        float[] h = new float[fine * fine];
+        for (int k = 0; k < h.length; k++) {
+            h[k] = (float) (100 + (k * 31 % 1000) / 7.0);
+        }
+        DemSource dem = new InMemoryDem("rows", List.of(HgtTile.of(new TileId(47, 8), N, nw, "nw"),
+                HgtTile.of(new TileId(47, 9), fine, h, "fine"), tile(46, 10, (la, lo) -> 500 + la)));
+        Mosaic m = Mosaic.of(dem, new TileSelection(46, 8, 2, 3,
+                new boolean[][] {{true, true, false}, {true, false, true}}), MissingTilePolicy.SEA_LEVEL);
+        java.util.Random random = new java.util.Random(7);
+        for (int r = 0; r < m.rows(); r++) {
+            int col = r % 3 == 0 ? 0 : random.nextInt(m.cols()), count = r % 3 == 0 ? m.cols() : random.nextInt(m.cols() - col + 1);
+            float[] out = new float[count + 3];
+            m.sampleRow(r, col, count, out, 3);
+            for (int c = 0; c < count; c++) {
+                assertEquals(Float.floatToRawIntBits(m.sample(r, col + c)), Float.floatToRawIntBits(out[3 + c]),
+                        "sample " + r + ", " + (col + c));
+            }
+        }
+        assertThrows(IndexOutOfBoundsException.class, () -> m.sampleRow(0, m.cols() - 2, 3, new float[3], 0));
+    }
+
+    @Test
     void samplesAndFlagsOfPresentMissingAndUnloadedTilesAndTheirSharedEdges() {
         // Block 2×2 (row 0 north): NW present with one void, NE present, SW missing, SE not touched.
         float[] nw = new float[N * N];

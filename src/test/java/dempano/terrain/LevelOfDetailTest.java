@@ -264,6 +264,56 @@ class LevelOfDetailTest {
         assertEquals(0, LevelOfDetail.riseAwayFromEye(east, new double[] {-27, 5}, spacing, spacing, southOfEye, slack));
     }
 
+    /**
+     * The definition, sample by sample (the implementation before it went cell by cell): the largest
+     * |height − coarse surface| over the full-resolution samples, per level.
+     */
+    static double[] deviationsBySample(float[] heights, int stride, int row0, int col0, int intervals) {
+        int levels = Integer.numberOfTrailingZeros(intervals);
+        double[] dev = new double[levels + 1];
+        for (int level = 1; level <= levels; level++) {
+            int s = 1 << level;
+            double worst = 0;
+            for (int i = 0; i <= intervals; i++) {
+                int ci = Math.min(i / s, intervals / s - 1);
+                double v = (i - ci * s) / (double) s;
+                for (int j = 0; j <= intervals; j++) {
+                    int cj = Math.min(j / s, intervals / s - 1);
+                    double u = (j - cj * s) / (double) s;
+                    int rn = row0 + ci * s, rs = rn + s, cw = col0 + cj * s, ce = cw + s;
+                    double coarse = LevelOfDetail.interpolate(heights[rn * stride + cw], heights[rn * stride + ce],
+                            heights[rs * stride + cw], heights[rs * stride + ce], u, v,
+                            Triangulation.splitsNorthWestToSouthEast(ci, cj));
+                    worst = Math.max(worst, Math.abs(heights[(row0 + i) * stride + col0 + j] - coarse));
+                }
+            }
+            dev[level] = worst;
+        }
+        return dev;
+    }
+
+    @Test
+    void deviationsAreBitForBitThoseOfTheSampleBySampleDefinition() {
+        java.util.Random random = new java.util.Random(19);
+        for (int trial = 0; trial < 200; trial++) {
+            int intervals = 1 << (1 + random.nextInt(6)), stride = intervals + 1 + random.nextInt(5);
+            int rows = intervals + 1 + random.nextInt(5);
+            float[] h = new float[rows * stride];
+            double scale = random.nextBoolean() ? 1 : 3000;
+            for (int k = 0; k < h.length; k++) {
+                h[k] = trial % 3 == 0 ? (float) Math.rint(random.nextGaussian() * scale) : (float) (random.nextGaussian() * scale);
+            }
+            int row0 = random.nextInt(rows - intervals), col0 = random.nextInt(stride - intervals);
+            double[] expected = deviationsBySample(h, stride, row0, col0, intervals);
+            double[] got = LevelOfDetail.deviationsMetres(h, stride, row0, col0, intervals);
+            assertEquals(expected.length, got.length);
+            for (int l = 0; l < got.length; l++) {
+                assertEquals(Double.doubleToRawLongBits(expected[l]), Double.doubleToRawLongBits(got[l]),
+                        "trial " + trial + " level " + l + ": " + expected[l] + " vs " + got[l]);
+            }
+        }
+    }
+
     /** A square patch's corners, (east, north) pairs, from its south-west corner and side. */
     static double[] corners(double west, double south, double side) {
         return new double[] {west, south + side, west + side, south + side, west, south, west + side, south};
