@@ -18,7 +18,11 @@ package dempano.orient;
  * @param hfovDeg           horizontal field of view, degrees
  * @param residualPx        root mean square of the fitting residuals (within the truncation), photo pixels
  * @param inlierShare       weighted share of skyline samples within the truncation, [0, 1]
- * @param score             see above, [0, 1]
+ * @param score             see above, [0, 1]; with inner edges matched, the weighted mean over skyline samples and
+ *                          edge points (edges weighted {@link OrientationEstimator#EDGE_WEIGHT} in all)
+ * @param edgeScore         mean truncated distance of the photo's inner edge points to the rendered depth edges,
+ *                          over the truncation, [0, 1] (texture edges keep it well above 0); NaN when no edges were
+ *                          matched
  * @param secondHeadingDeg  the best other heading, degrees; NaN when there was none (a pinned or narrow prior)
  * @param marginScore       second score − best score; NaN when there was no other heading
  * @param unsure            whether the match should not be trusted (see above)
@@ -26,13 +30,14 @@ package dempano.orient;
  * @param seconds           time spent matching (not rendering), seconds
  */
 public record OrientationEstimate(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg,
-                                  double residualPx, double inlierShare, double score, double secondHeadingDeg,
+                                  double residualPx, double inlierShare, double score, double edgeScore,
+                                  double secondHeadingDeg,
                                   double marginScore, boolean unsure, int samples, double seconds) {
     /** One line for a log. */
     public String summary() {
         return String.format(java.util.Locale.ROOT, "heading %.2f°, pitch %.2f°, roll %.2f°, hfov %.2f°;"
-                        + " residual %.2f px, %.0f %% of %d skyline samples fit, margin %.3f over heading %.1f°%s",
-                headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, marginScore,
+                        + " residual %.2f px, %.0f %% of %d skyline samples fit, edge score %.3f, margin %.3f over heading %.1f°%s",
+                headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, edgeScore, marginScore,
                 secondHeadingDeg, unsure ? " — UNSURE" : "");
     }
 }

@@ -96,7 +96,8 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         priors = pitch ? priors : priors.withPitchDeg(known[1]);
         priors = roll ? priors : priors.withRollDeg(known[2]);
         priors = hfov ? priors : priors.withHfovRangeDeg(known[3], known[3]);
-        OrientationEstimate e = OrientationEstimator.estimate(sky, profile, priors);
+        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(photo, sky), profile,
+                SilhouetteField.of(pano), priors);
         return new Result(e, OrientationOverlay.draw(photo, sky, profile, e));
     }
 

@@ -86,4 +86,42 @@ class OrientationEstimatorTest {
                 () -> OrientationEstimator.estimate(none, profile, OrientationPriors.NONE));
         assertTrue(ex.getMessage().contains("too little skyline"), ex.getMessage());
     }
+
+    /** Edge flags of an analytic curve on a panorama grid (row whose top boundary is nearest the curve). */
+    static SilhouetteField field(java.util.function.DoubleUnaryOperator curve, double ppd, double topDeg, int h) {
+        int w = (int) Math.round(360 * ppd);
+        boolean[] edge = new boolean[w * h];
+        for (int c = 0; c < w; c++) {
+            int r = (int) Math.round((topDeg - curve.applyAsDouble((c + 0.5) / ppd)) * ppd);
+            if (r >= 0 && r < h) {
+                edge[r * w + c] = true;
+            }
+        }
+        return new SilhouetteField(edge, w, h, ppd, topDeg);
+    }
+
+    @Test
+    void innerEdgesPickTheRightHeadingOfAPeriodicSkyline() {
+        java.util.function.DoubleUnaryOperator periodic = az -> 5 + 3 * Math.sin(Math.toRadians(12 * az));
+        java.util.function.DoubleUnaryOperator inner = az -> SyntheticSkyline.ridge(az) - 9;
+        HorizonProfile profile = SyntheticSkyline.profile(periodic, 10);
+        SilhouetteField f = field(inner, 10, 20, 400);
+        CameraOrientation truth = new CameraOrientation(100, 1, -1);
+        Skyline sky = SyntheticSkyline.project(periodic, W, H, truth, 40);
+        Skyline ridge = SyntheticSkyline.project(inner, W, H, truth, 40);
+        int n = 0;
+        double[] x = new double[W], y = new double[W];
+        for (int c = 0; c < W; c += 2) {
+            if (!Double.isNaN(ridge.row(c))) {
+                x[n] = c;
+                y[n++] = Math.round(ridge.row(c)); // photo edge points are whole pixels
+            }
+        }
+        PhotoEdges edges = new PhotoEdges(java.util.Arrays.copyOf(x, n), java.util.Arrays.copyOf(y, n));
+        OrientationEstimate e = OrientationEstimator.estimate(sky, edges, profile, f, OrientationPriors.NONE);
+        assertTrue(headingError(e, 100) < 0.1, e.summary());
+        assertEquals(40, e.hfovDeg(), 0.4, e.summary());
+        assertTrue(e.edgeScore() < 0.3, e.summary());
+        assertTrue(e.marginScore() > 0.1, e.summary());
+    }
 }
