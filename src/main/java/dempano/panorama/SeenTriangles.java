@@ -43,8 +43,21 @@ public record SeenTriangles(double[] corners, boolean[] skirt, int[][] triangleO
      * @param dx ray direction, unit length (eye frame, jME axes)
      */
     public double distanceAlong(int triangle, double dx, double dy, double dz) {
-        double[] c = corners;
-        int o = triangle * 9;
+        double t = rayTriangleMetres(corners, triangle * 9, dx, dy, dz);
+        if (t == Double.POSITIVE_INFINITY) {
+            return t;
+        }
+        double hx = t * dx, hz = t * dz;
+        return hx * hx + hz * hz > rangeMetres * rangeMetres ? Double.POSITIVE_INFINITY : t;
+    }
+
+    /**
+     * Möller–Trumbore in double precision: the distance along a unit ray from the origin to the
+     * triangle stored at {@code c[o..o+8]} (first vertex, then the edges to the second and third),
+     * or +∞ when the ray misses it (beyond {@link #EDGE_TOLERANCE}), lies in its plane or meets it
+     * behind the origin.
+     */
+    public static double rayTriangleMetres(double[] c, int o, double dx, double dy, double dz) {
         double e1x = c[o + 3], e1y = c[o + 4], e1z = c[o + 5], e2x = c[o + 6], e2y = c[o + 7], e2z = c[o + 8];
         double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
@@ -52,7 +65,7 @@ public record SeenTriangles(double[] corners, boolean[] skirt, int[][] triangleO
             return Double.POSITIVE_INFINITY; // the ray lies in the triangle's plane: it is seen edge-on
         }
         double inv = 1 / det;
-        double tx = -c[o], ty = -c[o + 1], tz = -c[o + 2]; // eye − first vertex
+        double tx = -c[o], ty = -c[o + 1], tz = -c[o + 2]; // origin − first vertex
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (u < -EDGE_TOLERANCE || u > 1 + EDGE_TOLERANCE) {
             return Double.POSITIVE_INFINITY;
@@ -63,11 +76,7 @@ public record SeenTriangles(double[] corners, boolean[] skirt, int[][] triangleO
             return Double.POSITIVE_INFINITY;
         }
         double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
-        if (!(t > 0)) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double hx = t * dx, hz = t * dz;
-        return hx * hx + hz * hz > rangeMetres * rangeMetres ? Double.POSITIVE_INFINITY : t;
+        return t > 0 ? t : Double.POSITIVE_INFINITY;
     }
 
     /**

@@ -42,7 +42,7 @@ public final class TerrainRayProbe implements RayProbe {
     private static final double HEIGHT_MARGIN_METRES = 1e-3;
     /** A ray point: where it is, and how it moves there (per metre along the ray). */
     private static final int LAT = 0, LON = 1, HEIGHT = 2, LIFT = 3, GROUND = 4, RISE = 5, ROW = 6, COL = 7,
-            ROW_RATE = 8, COL_RATE = 9, POINT = 10;
+            ROW_RATE = 8, COL_RATE = 9, SIN_LAT = 10, COS_LAT = 11, SIN_LON = 12, COS_LON = 13, N_RADIUS = 14, POINT = 15;
     /** e'² = (a² − b²) / b². */
     private static final double SECOND_ECCENTRICITY_SQ = Ellipsoid.E2 / ((1 - Ellipsoid.F) * (1 - Ellipsoid.F));
 
@@ -148,7 +148,7 @@ public final class TerrainRayProbe implements RayProbe {
         int vertexCols = c1 - c0 + 2;
         double[] vertices = new double[3 * (r1 - r0 + 2) * vertexCols];
         java.util.Arrays.fill(vertices, Double.NaN);
-        double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3];
+        double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3], tri = new double[9];
         double best = Double.POSITIVE_INFINITY;
         // The cells along the path (a straight line in rows and columns over these few cells), with
         // their neighbours across an edge the path runs along.
@@ -168,11 +168,11 @@ public final class TerrainRayProbe implements RayProbe {
                 vertex(r + 1, c + 1, r0, c0, vertexCols, vertices, se);
                 double t1, t2;
                 if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
-                    t1 = rayTriangle(e, n, u, nw, ne, se);
-                    t2 = rayTriangle(e, n, u, nw, se, sw);
+                    t1 = rayTriangle(e, n, u, nw, ne, se, tri);
+                    t2 = rayTriangle(e, n, u, nw, se, sw, tri);
                 } else {
-                    t1 = rayTriangle(e, n, u, nw, ne, sw);
-                    t2 = rayTriangle(e, n, u, ne, se, sw);
+                    t1 = rayTriangle(e, n, u, nw, ne, sw, tri);
+                    t2 = rayTriangle(e, n, u, ne, se, sw, tri);
                 }
                 double t = Math.min(t1, t2);
                 if (t >= from && t <= to && t < best) {
@@ -198,28 +198,14 @@ public final class TerrainRayProbe implements RayProbe {
         }
     }
 
-    /** Distance along the unit ray from the eye (ENU origin) to triangle (p, q, s), Möller–Trumbore; +∞ if missed. */
-    private static double rayTriangle(double dx, double dy, double dz, double[] p, double[] q, double[] s) {
-        double e1x = q[0] - p[0], e1y = q[1] - p[1], e1z = q[2] - p[2];
-        double e2x = s[0] - p[0], e2y = s[1] - p[1], e2z = s[2] - p[2];
-        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-        double det = e1x * px + e1y * py + e1z * pz;
-        if (det == 0 || Double.isNaN(det)) {
-            return Double.POSITIVE_INFINITY;
+    /** Distance along the unit ray from the eye (ENU origin) to triangle (p, q, s); +∞ if missed. {@code tri}: 9 doubles of scratch. */
+    private static double rayTriangle(double dx, double dy, double dz, double[] p, double[] q, double[] s, double[] tri) {
+        for (int a = 0; a < 3; a++) {
+            tri[a] = p[a];
+            tri[3 + a] = q[a] - p[a];
+            tri[6 + a] = s[a] - p[a];
         }
-        double inv = 1 / det;
-        double tx = -p[0], ty = -p[1], tz = -p[2];
-        double a = (tx * px + ty * py + tz * pz) * inv;
-        if (a < -1e-9 || a > 1 + 1e-9) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
-        double b = (dx * qx + dy * qy + dz * qz) * inv;
-        if (b < -1e-9 || a + b > 1 + 1e-9) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
-        return t > 0 ? t : Double.POSITIVE_INFINITY;
+        return dempano.panorama.SeenTriangles.rayTriangleMetres(tri, 0, dx, dy, dz);
     }
 
     /**
@@ -238,7 +224,10 @@ public final class TerrainRayProbe implements RayProbe {
      */
     private double[] crestSafeBracket(double e, double n, double u, double a, double tMax, double horizontalShare,
                                       double[] anchor, double[] scratch) {
+        double[] dir = new double[3];
+        frame.enuDirectionToEcef(e, n, u, dir);
         double anchorT = a, t = a, ct = clearance(e, n, u, a, anchor);
+        rates(anchor, dir);
         int level = LEVELS - 1;
         double[] crossings = new double[16];
         while (true) {
@@ -253,6 +242,7 @@ public final class TerrainRayProbe implements RayProbe {
                 if (!(c > 0)) { // proven above up to here: only rounding can put it under
                     return new double[] {t - 1e-6 * t, ct, t, c};
                 }
+                rates(anchor, dir);
                 anchorT = t;
                 ct = c;
             }
@@ -292,6 +282,7 @@ public final class TerrainRayProbe implements RayProbe {
             }
             // Above at the cell's far end: a new anchor there, computed anyway.
             System.arraycopy(scratch, 0, anchor, 0, POINT);
+            rates(anchor, dir);
             anchorT = t1;
             ct = cPrevious;
             t = t1;
@@ -446,8 +437,7 @@ public final class TerrainRayProbe implements RayProbe {
         if (p < 1e3) {
             double c = clearanceNearPole(x, y, z, point);
             double lat = Math.toRadians(point[LAT]), lon = Math.toRadians(point[LON]), sinLat = Math.sin(lat);
-            rates(point, sinLat, Math.cos(lat), Math.cos(lon), Math.sin(lon),
-                    Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat), point[HEIGHT], e, n, u);
+            storeTrig(point, sinLat, Math.cos(lat), Math.sin(lon), Math.cos(lon));
             return c;
         }
         // Bowring's closed form (one step from the parametric latitude): under 1e-7 m in height
@@ -465,18 +455,28 @@ public final class TerrainRayProbe implements RayProbe {
                 fz = nRadius * (1 - Ellipsoid.E2) * sinLat - eyeFoot[2];
         double ground = Refraction.groundDistanceFromChordMetres(Math.sqrt(fx * fx + fy * fy + fz * fz));
         double c = clearanceAt(latDeg, lonDeg, height, ground, point);
-        rates(point, sinLat, cosLat, x / p, y / p, nRadius, height, e, n, u);
+        storeTrig(point, sinLat, cosLat, y / p, x / p);
         return c;
     }
 
+    /** Stores the point's latitude and longitude as sines and cosines, and its prime-vertical radius (for {@link #rates}). */
+    private static void storeTrig(double[] point, double sinLat, double cosLat, double sinLon, double cosLon) {
+        point[SIN_LAT] = sinLat;
+        point[COS_LAT] = cosLat;
+        point[SIN_LON] = sinLon;
+        point[COS_LON] = cosLon;
+        point[N_RADIUS] = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat);
+    }
+
     /**
-     * Fills the point's rates per metre along the ray: of its height (the ray direction along the
-     * ellipsoid normal there) and of its fractional grid row and column.
+     * Fills an anchor's rates per metre along the ray: of its height (the ray direction along the
+     * ellipsoid normal there) and of its fractional grid row and column. Only anchors need them.
+     *
+     * @param dir the ray's unit direction in ECEF axes
      */
-    private void rates(double[] point, double sinLat, double cosLat, double cosLon, double sinLon, double nRadius,
-                       double height, double e, double n, double u) {
-        double[] dir = new double[3];
-        frame.enuDirectionToEcef(e, n, u, dir);
+    private void rates(double[] point, double[] dir) {
+        double sinLat = point[SIN_LAT], cosLat = point[COS_LAT], sinLon = point[SIN_LON], cosLon = point[COS_LON];
+        double nRadius = point[N_RADIUS], height = point[HEIGHT];
         double rise = cosLat * (cosLon * dir[0] + sinLon * dir[1]) + sinLat * dir[2];
         double east = -sinLon * dir[0] + cosLon * dir[1];
         double north = -sinLat * (cosLon * dir[0] + sinLon * dir[1]) + cosLat * dir[2];
