@@ -231,6 +231,12 @@ public final class Mosaic {
                 for (; c < stop; c++) {
                     out[offset + c - col] = t.heightMetres(lr, c - first);
                 }
+            } else if (t == null && lr > 0 && c > tc * n) {
+                // Inside a missing tile, off its north row and west column (which a neighbour may serve):
+                // every sample is the tile's one value, as locate() decides it.
+                int stop = Math.min(end, tc == tilesEastWest - 1 ? cols : (tc + 1) * n);
+                java.util.Arrays.fill(out, offset + c - col, offset + stop - col, seaLevel[tr][tc] ? 0f : Float.NaN);
+                c = stop;
             } else {
                 out[offset + c - col] = sample(row, c);
                 c++;

@@ -13,12 +13,17 @@ package dempano.panorama;
  *                           to the second and third vertex
  * @param skirt              per triangle: true for a skirt's (a vertical wall hung below a patch
  *                           edge to close cracks between levels of detail): drawn, but not terrain
+ * @param simplified         per triangle: true where it belongs to a simplified patch (level of
+ *                           detail above 0, or a merged block), whose surface sags off the
+ *                           full-resolution one; false for a full-resolution patch's, which lies
+ *                           on the surface the CPU reference draws (to micrometres)
  * @param triangleOfSample   per view, per sample (GL order, row 0 at the bottom): the index of the
  *                           triangle seen there, −1 where nothing was drawn (sky)
  * @param rangeMetres        the range cut: a point farther than this horizontally from the eye
  *                           (√(x² + z²)) is not drawn, as in the shader
  */
-public record SeenTriangles(double[] corners, boolean[] skirt, int[][] triangleOfSample, double rangeMetres) {
+public record SeenTriangles(double[] corners, boolean[] skirt, boolean[] simplified, int[][] triangleOfSample,
+                            double rangeMetres) {
     /**
      * Relative tolerance on the barycentric coordinates: a ray through a shared edge hits one of
      * its two triangles whatever the rounding (the nearer hit is kept, and both are at one distance).

@@ -146,7 +146,7 @@ public final class Stitcher {
             double[] p = new double[4];
             double[] ray = new double[3];
             int[] candidates = new int[16];
-            double[] hint = new double[4];
+            double[] hint = new double[5];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int col = 0; col < width; col++) {
                 int view = sampling.locate(col, row, p, ray);
@@ -174,10 +174,12 @@ public final class Stitcher {
                     } else {
                         r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
                     }
-                    if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && probe != null) {
+                    if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && hint[4] > 0
+                            && probe != null) {
                         // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
                         // distance (and the level of detail leaves the horizon rows unbounded): the full-
-                        // resolution surface decides, searched around the triangle's hit.
+                        // resolution surface decides, searched around the triangle's hit. A full-resolution
+                        // patch's triangle is that surface already.
                         double refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
                         if (refined < Double.POSITIVE_INFINITY) {
                             r = refined;
@@ -254,7 +256,8 @@ public final class Stitcher {
      * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
      *                   samples (else 0), [1] and [2] the distances to the nearest and the farthest
      *                   candidate's first corner; when a distance is returned: [3] the sine of the
-     *                   incidence on the triangle met (1 for sky)
+     *                   incidence on the triangle met (1 for sky), [4] 1 if that triangle is a
+     *                   simplified patch's ({@link SeenTriangles#simplified()}), else 0
      */
     static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
                              double dz, int[] candidates, double[] hint) {
@@ -268,6 +271,7 @@ public final class Stitcher {
                 double d = seen.skirt()[t] ? Double.POSITIVE_INFINITY : seen.distanceAlong(t, dx, dy, dz);
                 if (d < Double.POSITIVE_INFINITY) {
                     hint[3] = seen.incidenceSine(t, dx, dy, dz);
+                    hint[4] = seen.simplified()[t] ? 1 : 0;
                     return d;
                 }
             }
@@ -315,6 +319,7 @@ public final class Stitcher {
             best = Double.POSITIVE_INFINITY; // a skirt hangs below the surface: the ray went under a simplified patch
         } else if (best < Double.POSITIVE_INFINITY || n == 0) {
             hint[3] = met < 0 ? 1 : seen.incidenceSine(met, dx, dy, dz);
+            hint[4] = met >= 0 && seen.simplified()[met] ? 1 : 0;
             return best;
         }
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;

@@ -73,7 +73,11 @@ public final class SeenTriangleResolver {
             triangleOfSample[k] = out;
         }
         double[] corners = new double[seen * 9];
-        boolean[] skirt = new boolean[seen];
+        boolean[] skirt = new boolean[seen], simplified = new boolean[seen];
+        boolean[] fullResolution = new boolean[drawn.size()];
+        for (int g = 0; g < drawn.size(); g++) {
+            fullResolution[g] = Boolean.TRUE.equals(drawn.get(g).getUserData(TerrainBuilder.FULL_RESOLUTION));
+        }
         int[] sg = seenGeometry, sp = seenPrimitive;
         Buffers[] buffers = new Buffers[drawn.size()];
         for (int g = 0; g < drawn.size(); g++) {
@@ -94,6 +98,7 @@ public final class SeenTriangleResolver {
                 }
                 placement.place(ecef, up, b.up.get(4 * vertex + 3), v, 3 * corner);
             }
+            simplified[t] = !fullResolution[sg[t]];
             skirt[t] = b.sameFoot(vertices[0], vertices[1]) || b.sameFoot(vertices[1], vertices[2]) || b.sameFoot(vertices[0], vertices[2]);
             int o = 9 * t;
             corners[o] = v[0];
@@ -104,7 +109,7 @@ public final class SeenTriangleResolver {
                 corners[o + 6 + a] = v[6 + a] - v[a];
             }
         });
-        return new SeenTriangles(corners, skirt, triangleOfSample, rangeMetres);
+        return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
     }
 
     /** A mesh's buffers in the layout {@link TerrainBuilder} writes (read with absolute gets: thread-safe). */

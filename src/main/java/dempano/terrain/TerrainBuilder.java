@@ -317,6 +317,7 @@ public final class TerrainBuilder {
                 merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
             } else {
                 TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
+                patch.setUserData(FULL_RESOLUTION, w.level == 0 && exaggeration == 1);
                 patch.setMesh(PatchMesh.merge(List.of(w.mesh)));
                 attach(quad, patch, w.mesh.hull(), material, placement, drawn);
                 if (w.meshKey != null) {
@@ -359,6 +360,13 @@ public final class TerrainBuilder {
 
     /** User data on a terrain geometry: its model bound is in the eye's frame already (do not recompute it from the vertices). */
     public static final String EYE_BOUND = "dempano.eyeBound";
+
+    /**
+     * User data on a terrain geometry: true when it is a full-resolution patch (level 0: every
+     * sample, triangulated as {@link Triangulation}), whose triangles are the CPU reference's own.
+     * Absent on merged coarse blocks.
+     */
+    public static final String FULL_RESOLUTION = "dempano.fullResolution";
 
     /**
      * Marks the patches no panorama ray reaches (see {@link HorizonCulling}); returns how many. The
