@@ -124,9 +124,10 @@ public final class Stitcher {
     }
 
     /**
-     * Below this sine of incidence (about 1.1°) a triangle's hit is searched again on the
-     * full-resolution surface ({@link RayProbe}): there a sag of the simplified surface of d·ε·sin θ
-     * would be a relative distance error ε.
+     * Below this sine of incidence (about 1.1°) a simplified patch's triangle's hit is searched again
+     * on the full-resolution surface ({@link RayProbe}): there a sag of the simplified surface of
+     * d·ε·sin θ would be a relative distance error ε. A full-resolution patch's triangle is kept:
+     * it is that surface.
      */
     static final double GRAZING_SINE = 0.02;
 
@@ -190,7 +191,9 @@ public final class Stitcher {
                     } else if (!Double.isNaN(r)) {
                         rowExact++;
                     } else if (probe != null
-                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz, 0.9 * hint[1], 2 * hint[2] + 500))
+                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
+                                    Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth[view], layout, p)),
+                                    2 * hint[2] + 500))
                             && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
                         rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
                     } else if (hint[0] > 0) {
@@ -208,6 +211,29 @@ public final class Stitcher {
             fallback.add(rowFallback);
         });
         return new Result(exactCount.sum(), probed.sum(), fallback.sum());
+    }
+
+    /**
+     * Where a pixel's ray met none of the triangles seen around it, its search starts this share of
+     * the nearest terrain seen at those samples (along its own ray) from the eye: terrain nearer
+     * still, that none of the 16 samples around saw, would be a feature narrower than a view sample
+     * and 3 % nearer than everything around it.
+     */
+    static final double NEAREST_SEEN_SHARE = 0.97;
+
+    /**
+     * Distance along the ray of view point p = {px, py, xTan, yTan} at which it reaches the eye depth
+     * of the nearest of the 4×4 view samples around it, metres (0 when none saw terrain).
+     */
+    static double nearestSeenMetres(float[] inv, ViewLayout l, double[] p) {
+        int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
+        float nearest = 0; // the largest inverse eye depth
+        for (int y = Math.max(0, y0 - 1), ye = Math.min(l.heightPx() - 1, y0 + 2); y <= ye; y++) {
+            for (int x = Math.max(0, x0 - 1), xe = Math.min(l.widthPx() - 1, x0 + 2); x <= xe; x++) {
+                nearest = Math.max(nearest, inv[y * l.widthPx() + x]);
+            }
+        }
+        return nearest > 0 ? DepthLinearizer.rangeFromEyeDepth(1 / nearest, p[2], p[3]) : 0;
     }
 
     /**
