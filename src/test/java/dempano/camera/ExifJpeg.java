@@ -195,6 +195,15 @@ final class ExifJpeg {
         g.setColor(new Color(90, 140, 200));
         g.fillRect(0, 0, width, height);
         g.dispose();
+        return jpeg(img);
+    }
+
+    /** A JPEG of this image (its RGB; stored as is) with this metadata. */
+    byte[] jpeg(BufferedImage image) {
+        BufferedImage img = new BufferedImage(image.getWidth(), image.getHeight(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.drawImage(image, 0, 0, null);
+        g.dispose();
         ByteArrayOutputStream plain = new ByteArrayOutputStream();
         try {
             ImageIO.write(img, "jpeg", plain);
@@ -230,6 +239,13 @@ final class ExifJpeg {
     Path write(Path dir, String name, int width, int height) throws IOException {
         Path p = dir.resolve(name);
         Files.write(p, jpeg(width, height));
+        return p;
+    }
+
+    /** Writes a JPEG of {@code image} (a rendered view, say) with this metadata. */
+    Path write(Path dir, String name, BufferedImage image) throws IOException {
+        Path p = dir.resolve(name);
+        Files.write(p, jpeg(image));
         return p;
     }
 }
