@@ -163,7 +163,7 @@ class BatchCommandTest {
     @ParameterizedTest(name = "[{index}] {2}")
     @CsvSource(delimiter = '|', value = {
             // CSV text (or - for no file) | exit | message
-            "id,lat\\na,1                  | 1    | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon)",
+            "id,lat\\na,1                  | 1    | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon; or id and image for photos)",
             "                               | 1    | v.csv: empty: want a header line naming the columns id,lat,lon",
             "-                              | 1    | cannot read the viewpoint file",
             "id,lat,lon\\na,\"1,2\\n       | 1    | v.csv: broken CSV after line 2",

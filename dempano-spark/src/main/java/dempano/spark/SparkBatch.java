@@ -98,9 +98,9 @@ public final class SparkBatch {
             }
         }
         for (String required : List.of(ViewpointCsv.ID, ViewpointCsv.LAT, ViewpointCsv.LON)) {
-            if (!known.containsKey(required)) {
+            if (!known.containsKey(required) && (required.equals(ViewpointCsv.ID) || !known.containsKey(ViewpointCsv.IMAGE))) {
                 throw new IllegalArgumentException("the table has no column '" + required + "' (it has: "
-                        + String.join(", ", table.columns()) + "; required: id, lat, lon)");
+                        + String.join(", ", table.columns()) + "; required: id, lat, lon; or id and image for photos)");
             }
         }
         List<Column> cells = new ArrayList<>();
@@ -115,8 +115,11 @@ public final class SparkBatch {
         rows = rows.withColumn(DUP, when(row_number().over(byId).gt(1),
                 concat(lit("row '"), first(id).over(byId), lit("'"))));
 
-        rows = rows.withColumn(LAT, col(ViewpointCsv.LAT).cast(DataTypes.DoubleType))
-                .withColumn(LON, col(ViewpointCsv.LON).cast(DataTypes.DoubleType))
+        // Photo rows without lat/lon (the position in the photo's EXIF) sort first, together.
+        rows = rows.withColumn(LAT, known.containsKey(ViewpointCsv.LAT) ? col(ViewpointCsv.LAT).cast(DataTypes.DoubleType)
+                        : lit(null).cast(DataTypes.DoubleType))
+                .withColumn(LON, known.containsKey(ViewpointCsv.LON) ? col(ViewpointCsv.LON).cast(DataTypes.DoubleType)
+                        : lit(null).cast(DataTypes.DoubleType))
                 .withColumn(TLAT, floor(col(LAT))).withColumn(TLON, floor(col(LON)));
         int n = Math.max(1, partitions);
         rows = switch (order) {
