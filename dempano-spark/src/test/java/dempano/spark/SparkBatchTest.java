@@ -207,8 +207,8 @@ class SparkBatchTest {
         for (String[] r : good) {
             Object[] v = new Object[r.length];
             for (int i = 0; i < r.length; i++) {
-                boolean text = i == 0 || i == 4;
-                v[i] = r[i].isEmpty() ? null : text ? r[i] : (Object) Double.parseDouble(r[i]);
+                boolean isText = i == 0 || i == 4;
+                v[i] = r[i].isEmpty() ? null : isText ? r[i] : (Object) Double.parseDouble(r[i]);
             }
             typed.add(RowFactory.create(v));
         }
