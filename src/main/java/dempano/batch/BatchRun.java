@@ -3,6 +3,7 @@ package dempano.batch;
 import dempano.PanoramaRenderer;
 import dempano.io.IoMessages;
 import dempano.io.OutputSet;
+import dempano.photo.PhotoJob;
 import dempano.io.PanoramaWriter;
 import dempano.panorama.Panorama;
 import dempano.render.GlUnavailableException;
@@ -149,6 +150,11 @@ public final class BatchRun {
     /** Renders one row and puts its files in place as one set; after a failure none of its new files is there. */
     private List<Path> renderOne(BatchRow row) throws IOException {
         String prefix = outDir.resolve(row.id()).toString();
+        if (row.photo() != null) {
+            BatchPhoto photo = row.photo();
+            return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, Double.NaN,
+                    row.request(), null, prefix), PhotoJob.Log.NONE).files();
+        }
         // Opened before rendering: an unwritable destination is found first; close() discards an uncommitted set.
         try (OutputSet set = OutputSet.open(prefix)) {
             set.checkTargets(PanoramaWriter.suffixes(row.request().colour(), row.request().distance(),

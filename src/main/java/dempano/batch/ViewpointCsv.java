@@ -1,6 +1,7 @@
 package dempano.batch;
 
 import dempano.PanoramaRequest;
+import dempano.camera.PhotoOverrides;
 import dempano.io.IoMessages;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -33,6 +34,14 @@ import org.apache.commons.csv.CSVRecord;
  *   <li>{@code eye_height_m}: eye above the standing altitude, metres (≥ 0)</li>
  *   <li>{@code range_km}: range of sight, km</li>
  *   <li>{@code ppd}: pixels per degree (360·ppd a whole number)</li>
+ *   <li>{@code image}: a photograph (JPEG, PNG, ...; a relative path is relative to the viewpoint file's folder).
+ *       A row with an image is a <em>photo row</em>, rendered on the photo's own pixel grid as {@code dempano photo}
+ *       renders it ({@link dempano.photo.PhotoJob}): its camera comes from the photo's EXIF/XMP, and the row's
+ *       {@code lat}, {@code lon} (both or neither), {@code altitude_m}, {@code offset_m}, {@code eye_height_m} and
+ *       the photo columns override it: {@code heading_deg} (true, clockwise from north), {@code pitch_deg} (up
+ *       positive), {@code roll_deg} (clockwise positive), {@code hfov_deg} or {@code focal35_mm}. What neither
+ *       gives, the row's error names. {@code ppd} is for panoramas. With an {@code image} column, {@code lat} and
+ *       {@code lon} may be left out of the header; a row with an empty image cell is a viewpoint</li>
  * </ul>
  *
  * An empty optional cell, or a missing optional column, takes the value of the defaults request
@@ -48,8 +57,14 @@ import org.apache.commons.csv.CSVRecord;
 public final class ViewpointCsv {
     public static final String ID = "id", LAT = "lat", LON = "lon", ALTITUDE_M = "altitude_m", OFFSET_M = "offset_m",
             EYE_HEIGHT_M = "eye_height_m", RANGE_KM = "range_km", PPD = "ppd";
+    /** Photo rows: the photograph, and its camera's values where the photo's metadata lacks them or is wrong. */
+    public static final String IMAGE = "image", HEADING_DEG = "heading_deg", PITCH_DEG = "pitch_deg", ROLL_DEG = "roll_deg",
+            HFOV_DEG = "hfov_deg", FOCAL35_MM = "focal35_mm";
+    /** The columns that only a photo row (one with an image) may fill. */
+    public static final List<String> PHOTO_COLUMNS = List.of(HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM);
     /** The columns read, required first. */
-    public static final List<String> COLUMNS = List.of(ID, LAT, LON, ALTITUDE_M, OFFSET_M, EYE_HEIGHT_M, RANGE_KM, PPD);
+    public static final List<String> COLUMNS = List.of(ID, LAT, LON, ALTITUDE_M, OFFSET_M, EYE_HEIGHT_M, RANGE_KM, PPD,
+            IMAGE, HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM);
     private static final List<String> REQUIRED = List.of(ID, LAT, LON);
     /** Plain decimal numbers: no NaN, Infinity, hexadecimal, type suffixes or decimal commas. */
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
@@ -82,6 +97,7 @@ public final class ViewpointCsv {
      * @throws ViewpointCsvException when the file cannot be read or used at all; the message names the file
      */
     public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
+        Path parent = file.toAbsolutePath().getParent();
         String text;
         try {
             text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
@@ -90,7 +106,7 @@ public final class ViewpointCsv {
         } catch (IOException e) {
             throw new ViewpointCsvException("cannot read the viewpoint file " + file + ": " + IoMessages.reason(e), e);
         }
-        return parse(file.toString(), text, defaults);
+        return parse(file.toString(), text, defaults, parent);
     }
 
     /**
@@ -103,6 +119,15 @@ public final class ViewpointCsv {
      *                               column is named twice or the CSV is broken (an unclosed quote)
      */
     public static Parsed parse(String source, String text, PanoramaRequest defaults) throws ViewpointCsvException {
+        return parse(source, text, defaults, null);
+    }
+
+    /**
+     * Parses viewpoint CSV text whose relative image paths are relative to {@code baseDir}.
+     *
+     * @param baseDir the folder relative image paths start from; null = the working directory
+     */
+    public static Parsed parse(String source, String text, PanoramaRequest defaults, Path baseDir) throws ViewpointCsvException {
         if (text.startsWith("\uFEFF")) {
             text = text.substring(1);
         }
@@ -139,7 +164,9 @@ public final class ViewpointCsv {
                     headerFields = f.size();
                     continue;
                 }
-                rows.add(row(line, f, headerFields, columns, defaults, firstLineOfId));
+                BatchRow row = row(line, f, headerFields, columns, defaults, firstLineOfId);
+                rows.add(row.photo() == null || baseDir == null ? row : new BatchRow(row.lineNumber(), row.id(),
+                        row.request(), new BatchPhoto(baseDir.resolve(row.photo().image()), row.photo().overrides()), null));
             }
         } catch (ViewpointCsvException e) {
             throw e;
@@ -167,9 +194,9 @@ public final class ViewpointCsv {
             }
         }
         for (String c : REQUIRED) {
-            if (!columns.containsKey(c)) {
+            if (!columns.containsKey(c) && !(columns.containsKey(IMAGE) && !c.equals(ID))) {
                 throw new ViewpointCsvException(source + ": line " + line + ": the header has no column '" + c + "' (it has: "
-                        + oneLine(String.join(", ", names)) + "; required: " + String.join(", ", REQUIRED) + ")");
+                        + oneLine(String.join(", ", names)) + "; required: " + String.join(", ", REQUIRED) + "; or id and image for photos)");
             }
         }
         return columns;
@@ -191,8 +218,17 @@ public final class ViewpointCsv {
             return BatchRow.invalid(line, id, at + "duplicate id '" + id + "' (first on line " + first + ")");
         }
         try {
-            double lat = number(f, columns, LAT, "latitude", Double.NaN);
-            double lon = number(f, columns, LON, "longitude", Double.NaN);
+            String image = cell(f, columns, IMAGE);
+            if (!image.isEmpty()) {
+                return photoRow(line, id, image, f, columns, defaults);
+            }
+            for (String c : PHOTO_COLUMNS) {
+                if (!cell(f, columns, c).isEmpty()) {
+                    throw new IllegalArgumentException(c + " is for photo rows: this row has no image");
+                }
+            }
+            double lat = required(number(f, columns, LAT, "latitude", Double.NaN), "latitude");
+            double lon = required(number(f, columns, LON, "longitude", Double.NaN), "longitude");
             PanoramaRequest r = atViewpoint(defaults, lat, lon);
             double altitude = number(f, columns, ALTITUDE_M, "altitude", Double.NaN);
             if (!Double.isNaN(altitude)) {
@@ -201,14 +237,78 @@ public final class ViewpointCsv {
             r = r.withOffsetMetres(number(f, columns, OFFSET_M, "offset", r.offsetMetres()))
                     .withEyeHeightMetres(number(f, columns, EYE_HEIGHT_M, "eye height", r.eyeHeightMetres()))
                     .withPixelsPerDegree(number(f, columns, PPD, "ppd", r.pixelsPerDegree()));
-            double rangeKm = number(f, columns, RANGE_KM, "range", Double.NaN);
-            if (!Double.isNaN(rangeKm)) {
-                r = r.withRangeMetres(rangeKm * 1000);
-            }
-            return new BatchRow(line, id, r, null);
+            return new BatchRow(line, id, withRange(r, f, columns), null, null);
         } catch (IllegalArgumentException e) {
             return BatchRow.invalid(line, id, at + oneLine(e.getMessage()));
         }
+    }
+
+    /** A photo row: the image, its camera values from the row, the defaults' render settings. */
+    private static BatchRow photoRow(int line, String id, String image, List<String> f, Map<String, Integer> columns,
+                                     PanoramaRequest defaults) {
+        if (!cell(f, columns, PPD).isEmpty()) {
+            throw new IllegalArgumentException("ppd is for panoramas: a photo is rendered on its own pixel grid");
+        }
+        Path path;
+        try {
+            path = Path.of(image);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new IllegalArgumentException("image '" + BatchIds.printable(image) + "' is not a file path");
+        }
+        double lat = number(f, columns, LAT, "latitude", Double.NaN), lon = number(f, columns, LON, "longitude", Double.NaN);
+        PhotoOverrides o = PhotoOverrides.NONE;
+        if (Double.isNaN(lat) != Double.isNaN(lon)) {
+            throw new IllegalArgumentException("give both lat and lon, or neither (the photo's GPS position)");
+        }
+        PanoramaRequest r = defaults;
+        if (!Double.isNaN(lat)) {
+            r = atViewpoint(defaults, lat, lon); // checks the range
+            o = o.withPosition(lat, lon);
+        }
+        double v;
+        if (!Double.isNaN(v = number(f, columns, ALTITUDE_M, "altitude", Double.NaN))) {
+            o = o.withAltitudeMetres(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, OFFSET_M, "offset", Double.NaN))) {
+            o = o.withOffsetMetres(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, EYE_HEIGHT_M, "eye height", Double.NaN))) {
+            o = o.withCameraHeightMetres(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, HEADING_DEG, "heading", Double.NaN))) {
+            o = o.withHeadingDeg(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, PITCH_DEG, "pitch", Double.NaN))) {
+            o = o.withPitchDeg(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, ROLL_DEG, "roll", Double.NaN))) {
+            o = o.withRollDeg(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, HFOV_DEG, "horizontal field of view", Double.NaN))) {
+            o = o.withHorizontalFovDeg(v);
+        }
+        if (!Double.isNaN(v = number(f, columns, FOCAL35_MM, "35 mm-equivalent focal length", Double.NaN))) {
+            o = o.withFocal35mmMm(v);
+        }
+        return new BatchRow(line, id, withRange(r, f, columns), new BatchPhoto(path, o), null);
+    }
+
+    private static PanoramaRequest withRange(PanoramaRequest r, List<String> f, Map<String, Integer> columns) {
+        double rangeKm = number(f, columns, RANGE_KM, "range", Double.NaN);
+        return Double.isNaN(rangeKm) ? r : r.withRangeMetres(rangeKm * 1000);
+    }
+
+    private static double required(double v, String what) {
+        if (Double.isNaN(v)) {
+            throw new IllegalArgumentException(what + " is empty");
+        }
+        return v;
+    }
+
+    /** A cell's text; empty when the column is missing. */
+    private static String cell(List<String> f, Map<String, Integer> columns, String column) {
+        Integer i = columns.get(column);
+        return i == null ? "" : f.get(i);
     }
 
     /**
@@ -217,12 +317,8 @@ public final class ViewpointCsv {
      * @throws IllegalArgumentException naming the column and the text for anything else (NaN, 1,5, 0x10, 12m)
      */
     private static double number(List<String> f, Map<String, Integer> columns, String column, String what, double absent) {
-        Integer i = columns.get(column);
-        String s = i == null ? "" : f.get(i);
+        String s = cell(f, columns, column);
         if (s.isEmpty()) {
-            if (REQUIRED.contains(column)) {
-                throw new IllegalArgumentException(what + " is empty");
-            }
             return absent;
         }
         if (!DECIMAL.matcher(s).matches()) {

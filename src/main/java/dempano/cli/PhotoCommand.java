@@ -1,27 +1,20 @@
 package dempano.cli;
 
 import dempano.CameraImage;
-import dempano.CameraRequest;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.camera.LensDistortion;
-import dempano.camera.PhotoCamera;
-import dempano.camera.PhotoMetadata;
 import dempano.camera.PhotoOverrides;
 import dempano.dem.DemDirectory;
-import dempano.geo.Refraction;
-import dempano.io.CameraWriter;
 import dempano.summits.SummitList;
-import dempano.summits.SummitProjector;
-import dempano.summits.SummitSighting;
-import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import javax.imageio.ImageIO;
+import dempano.photo.PhotoJob;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -74,25 +67,72 @@ public final class PhotoCommand implements Callable<Integer> {
     Integer widthPx;
     @Option(names = "--height-px", description = "Without IMAGE: image height, pixels.")
     Integer heightPx;
-    @Option(names = "--range-km", description = "Range of sight, km (default: ${DEFAULT-VALUE}).", defaultValue = "100")
-    double rangeKm;
-    @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
-    double refraction;
-    @Option(names = "--supersampling", description = "View pixels per photo pixel at the finest, linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    double supersampling;
-    @Option(names = "--exact-distances", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Every pixel's distance along its own ray against the triangles seen (default); --no-exact-distances interpolates the views' depth.")
-    boolean exactDistances;
+    /** The render options shared with panoramas (range, refraction, supersampling, exact distances, layers, renderer, ...). */
+    @Mixin
+    RenderOptions render = new RenderOptions();
     @Option(names = "--heading-range-deg", paramLabel = "DEG", description = "Estimate the heading within ± DEG of the one given (flag or EXIF compass) instead of taking it as is.")
     Double headingRangeDeg;
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (as for panoramas): P-summits.json/csv and labels.")
     Path summitsFile;
 
-    private BufferedImage orientationOverlay;
-    private String orientationJson;
-
     @Override
     public Integer call() throws Exception {
+        PanoramaRequest settings = render.applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
+        boolean reference = render.referenceRenderer();
+        dempano.dem.VoidFill fill = render.voidFillMethod();
+        PhotoOverrides overrides = overrides();
+        if (image == null) {
+            // Checked before anything is read, as before: a camera from flags needs its size.
+            if (widthPx == null || heightPx == null || widthPx < 1 || heightPx < 1) {
+                throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
+                        + " camera from flags alone");
+            }
+        }
+        dempano.io.OutputSet.checkPrefix(out);
+        Path outParent = Path.of(out).toAbsolutePath().getParent();
+        if (outParent != null && out.startsWith("build/")) {
+            java.nio.file.Files.createDirectories(outParent);
+        }
+        SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
+        PhotoJob.Input input = new PhotoJob.Input(image, overrides, widthPx, heightPx,
+                headingRangeDeg == null ? Double.NaN : headingRangeDeg, settings, summits, out);
+        List<DemDirectory> sources = new ArrayList<>();
+        for (Path d : demDirs) {
+            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill);
+            one.warnings().forEach(w -> System.err.println("  warning: " + w));
+            sources.add(one);
+        }
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(sources, fill);
+        PhotoJob.Result done;
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+            done = PhotoJob.run(r, input, new PhotoJob.Log() {
+                @Override
+                public void progress(String line) {
+                    System.err.println("  " + line);
+                }
+
+                @Override
+                public void result(String line) {
+                    System.out.println(line);
+                }
+            });
+        } catch (IllegalStateException e) {
+            if (!reference) {
+                throw e;
+            }
+            throw new IllegalArgumentException("--renderer reference: " + e.getMessage(), e);
+        }
+        CameraImage rendered = done.image();
+        System.out.println(String.format(Locale.ROOT, "%d×%d view at %.5f, %.5f (eye %.1f m), %d view(s) of %d×%d;"
+                        + " timings %s", rendered.widthPx(), rendered.heightPx(), rendered.metadata().latDeg(),
+                rendered.metadata().lonDeg(), rendered.metadata().eyeAltitudeMetres(), rendered.metadata().views(),
+                rendered.metadata().viewWidthPx(), rendered.metadata().viewHeightPx(), rendered.metadata().timingsMillis()));
+        done.files().forEach(f -> System.out.println("wrote " + f));
+        return 0;
+    }
+
+    /** The camera values given as flags. */
+    private PhotoOverrides overrides() {
         PhotoOverrides o = PhotoOverrides.NONE;
         if (latDeg != null || lonDeg != null) {
             o = o.withPosition(latDeg == null ? Double.NaN : latDeg, lonDeg == null ? Double.NaN : lonDeg);
@@ -114,106 +154,6 @@ public final class PhotoCommand implements Callable<Integer> {
             }
             o = o.withDistortion(new LensDistortion(distortion[0], distortion[1], distortion[2], distortion[3], distortion[4]));
         }
-        PhotoMetadata meta;
-        BufferedImage photo = null;
-        if (image != null) {
-            if (widthPx != null || heightPx != null) {
-                throw new IllegalArgumentException("--width-px and --height-px are for a camera without a photo: the"
-                        + " photo's own size is used");
-            }
-            meta = PhotoMetadata.read(image);
-            BufferedImage stored = ImageIO.read(image.toFile());
-            if (stored != null) {
-                photo = CameraWriter.displayed(stored, meta.orientation());
-            }
-        } else {
-            if (widthPx == null || heightPx == null || widthPx < 1 || heightPx < 1) {
-                throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
-                        + " camera from flags alone");
-            }
-            meta = new PhotoMetadata("camera from flags", widthPx, heightPx, 1, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, null, List.of());
-        }
-        // Heading, pitch, roll and field of view that neither flags nor metadata give are estimated from the skyline.
-        dempano.orient.PhotoOrientation open = photo == null ? new dempano.orient.PhotoOrientation(false, false, false, false)
-                : dempano.orient.PhotoOrientation.open(meta, o, headingRangeDeg != null);
-        PhotoOverrides given = o;
-        if (open.any()) {
-            System.err.println("  estimating from the skyline: " + String.join(", ", open.names()));
-            o = open.placeholders(o);
-        }
-        PhotoCamera camera;
-        try {
-            camera = meta.resolve(o);
-        } catch (dempano.camera.PhotoMetadataException e) {
-            throw new IllegalArgumentException(e.getMessage(), e);
-        }
-        camera.provenance().forEach(line -> System.err.println("  " + line));
-        dempano.io.OutputSet.checkPrefix(out);
-        Path outParent = Path.of(out).toAbsolutePath().getParent();
-        if (outParent != null && out.startsWith("build/")) {
-            java.nio.file.Files.createDirectories(outParent);
-        }
-        SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
-        List<DemDirectory> sources = new ArrayList<>();
-        for (Path d : demDirs) {
-            DemDirectory one = new DemDirectory(d);
-            one.warnings().forEach(w -> System.err.println("  warning: " + w));
-            sources.add(one);
-        }
-        PanoramaRequest settings = PanoramaRequest.at(camera.pose().latDeg(), camera.pose().lonDeg())
-                .withRangeMetres(rangeKm * 1000).withRefraction(new Refraction(refraction))
-                .withSupersampling(supersampling).withExactDistances(exactDistances);
-        CameraImage rendered;
-        try (PanoramaRenderer r = PanoramaRenderer.open(dempano.dem.PriorityDem.of(sources))) {
-            if (open.any()) {
-                dempano.camera.CameraOrientation k = camera.pose().orientation();
-                dempano.orient.PhotoOrientation.Result est;
-                try {
-                    est = open.estimate(r, settings.withOffsetMetres(camera.pose().offsetMetres())
-                                    .withAltitudeMetres(camera.pose().altitudeMetres()).withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                            photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
-                            // The range is a prior only around a heading that was given (flag or metadata).
-                            headingRangeDeg == null || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
-                                    ? Double.NaN : headingRangeDeg);
-                } catch (IllegalArgumentException e) {
-                    List<String> missing = meta.missing(given);
-                    throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
-                            + " from the photo: " + e.getMessage() + (missing.isEmpty() ? "" : "; give them instead:\n  - "
-                            + String.join("\n  - ", missing)), e);
-                }
-                String line = est.provenance(open);
-                System.out.println(line);
-                try {
-                    camera = meta.resolve(open.apply(given, est.estimate()));
-                } catch (dempano.camera.PhotoMetadataException e) {
-                    throw new IllegalArgumentException(e.getMessage(), e);
-                }
-                List<String> prov = new ArrayList<>(camera.provenance());
-                prov.add(line);
-                camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
-                orientationOverlay = est.overlay();
-                orientationJson = new com.google.gson.GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues()
-                        .create().toJson(est.estimate());
-            }
-            rendered = r.render(CameraRequest.of(camera).withSettings(settings),
-                    stage -> System.err.println("  " + stage));
-        }
-        List<SummitSighting> sightings = summits == null ? null : SummitProjector.project(rendered, summits);
-        List<Path> files = CameraWriter.write(rendered, out, new CameraWriter.Extras(photo, sightings, camera.provenance()));
-        System.out.println(String.format(Locale.ROOT, "%d×%d view at %.5f, %.5f (eye %.1f m), %d view(s) of %d×%d;"
-                        + " timings %s", rendered.widthPx(), rendered.heightPx(), rendered.metadata().latDeg(),
-                rendered.metadata().lonDeg(), rendered.metadata().eyeAltitudeMetres(), rendered.metadata().views(),
-                rendered.metadata().viewWidthPx(), rendered.metadata().viewHeightPx(), rendered.metadata().timingsMillis()));
-        if (orientationOverlay != null) {
-            Path png = Path.of(out + "-orientation.png"), json = Path.of(out + "-orientation.json");
-            ImageIO.write(orientationOverlay, "png", png.toFile());
-            java.nio.file.Files.writeString(json, orientationJson + "\n");
-            files = new ArrayList<>(files);
-            files.add(png);
-            files.add(json);
-        }
-        files.forEach(f -> System.out.println("wrote " + f));
-        return 0;
+        return o;
     }
 }

@@ -52,34 +52,50 @@ public final class CameraWriter {
     /** Writes every file for prefix P; returns their paths. */
     public static List<Path> write(CameraImage image, String prefix, Extras extras) throws IOException {
         try (OutputSet set = OutputSet.open(prefix)) {
-            List<String> suffixes = new ArrayList<>(List.of(".png", "-distance.npy", "-overlay.png", ".json"));
-            if (extras.summits() != null) {
-                suffixes.addAll(List.of("-summits.json", "-summits.csv"));
-            }
-            set.checkTargets(suffixes);
-            List<Path> files = new ArrayList<>();
-            if (image.hasColour()) {
-                BufferedImage rendered = image.image();
-                files.add(set.write(".png", out -> ImageIO.write(rendered, "png", out)));
-            }
-            if (image.hasDistance()) {
-                files.add(set.write("-distance.npy", FloatArrayWriter.npy(image.distanceBuffer(), image.heightPx(),
-                        image.widthPx())));
-                BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
-                files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
-            }
-            if (extras.summits() != null) {
-                String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
-                files.add(set.write("-summits.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
-                files.add(set.write("-summits.csv", out -> out.write(csv.getBytes(StandardCharsets.UTF_8))));
-            }
-            List<Path> all = new ArrayList<>(files);
-            all.add(set.target(".json"));
-            String meta = metadataJson(image, extras.provenance(), all);
-            files.add(set.write(".json", out -> out.write(meta.getBytes(StandardCharsets.UTF_8))));
+            List<Path> files = stage(set, image, extras);
             set.commit();
             return files;
         }
+    }
+
+    /** The suffixes {@link #stage} writes (to check the destination before rendering). */
+    public static List<String> suffixes(boolean summits) {
+        List<String> suffixes = new ArrayList<>(List.of(".png", "-distance.npy", "-overlay.png", ".json"));
+        if (summits) {
+            suffixes.addAll(List.of("-summits.json", "-summits.csv"));
+        }
+        return suffixes;
+    }
+
+    /**
+     * Writes every file for the set's prefix into the set, {@code P.json} last, without committing it (the
+     * caller may add files of its own, then commits).
+     *
+     * @return the files' final paths, {@code P.json} last
+     */
+    public static List<Path> stage(OutputSet set, CameraImage image, Extras extras) throws IOException {
+        set.checkTargets(suffixes(extras.summits() != null));
+        List<Path> files = new ArrayList<>();
+        if (image.hasColour()) {
+            BufferedImage rendered = image.image();
+            files.add(set.write(".png", out -> ImageIO.write(rendered, "png", out)));
+        }
+        if (image.hasDistance()) {
+            files.add(set.write("-distance.npy", FloatArrayWriter.npy(image.distanceBuffer(), image.heightPx(),
+                    image.widthPx())));
+            BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
+            files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
+        }
+        if (extras.summits() != null) {
+            String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
+            files.add(set.write("-summits.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
+            files.add(set.write("-summits.csv", out -> out.write(csv.getBytes(StandardCharsets.UTF_8))));
+        }
+        List<Path> all = new ArrayList<>(files);
+        all.add(set.target(".json"));
+        String meta = metadataJson(image, extras.provenance(), all);
+        files.add(set.write(".json", out -> out.write(meta.getBytes(StandardCharsets.UTF_8))));
+        return files;
     }
 
     /**
@@ -168,8 +184,14 @@ public final class CameraWriter {
         in.put("fyPx", k.fyPx());
         in.put("cxPx", k.cxPx());
         in.put("cyPx", k.cyPx());
-        in.put("distortion", Map.of("k1", k.distortion().k1(), "k2", k.distortion().k2(), "p1", k.distortion().p1(),
-                "p2", k.distortion().p2(), "k3", k.distortion().k3()));
+        // In OpenCV's order, always: Map.of's iteration order changes from one JVM run to the next.
+        Map<String, Object> distortion = new LinkedHashMap<>();
+        distortion.put("k1", k.distortion().k1());
+        distortion.put("k2", k.distortion().k2());
+        distortion.put("p1", k.distortion().p1());
+        distortion.put("p2", k.distortion().p2());
+        distortion.put("k3", k.distortion().k3());
+        in.put("distortion", distortion);
         in.put("horizontalFovDeg", k.horizontalFovDeg());
         in.put("verticalFovDeg", k.verticalFovDeg());
         doc.put("intrinsics", in);

@@ -134,7 +134,7 @@ class ViewpointCsvTest {
     @CsvSource(delimiter = '|', quoteCharacter = '`', value = {
             "                              | v.csv: empty: want a header line naming the columns id,lat,lon",
             "\uFEFF                        | v.csv: empty",
-            "id,lat\\na,1                   | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon)",
+            "id,lat\\na,1                   | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon; or id and image for photos)",
             "lat,lon\\n1,2                  | v.csv: line 1: the header has no column 'id'",
             "id,lat,lon,LAT\\na,1,2,3       | v.csv: line 1: the header names column 'lat' twice",
             "id,lat,lon\\na,1,2\\n\"b,3,4\\n  | v.csv: broken CSV after line",

@@ -19,7 +19,7 @@ import javax.imageio.ImageIO;
  * an APP1 "Exif" segment holding a big-endian TIFF structure (IFD0 → Exif IFD and GPS IFD) as in the EXIF 2.32
  * standard, and an APP1 XMP packet, both inserted right after the SOI marker.
  */
-final class ExifJpeg {
+public final class ExifJpeg {
     static final int BYTE = 1, ASCII = 2, SHORT = 3, LONG = 4, RATIONAL = 5;
     static final int TAG_EXIF_IFD = 0x8769, TAG_GPS_IFD = 0x8825;
 
@@ -70,12 +70,12 @@ final class ExifJpeg {
         return rationals(tag, d, 1, m, 1, s, 10000);
     }
 
-    ExifJpeg orientation(int o) {
+    public ExifJpeg orientation(int o) {
         ifd0.add(shortValue(0x0112, o));
         return this;
     }
 
-    ExifJpeg position(double lat, double lon) {
+    public ExifJpeg position(double lat, double lon) {
         gps.add(ascii(0x0001, lat >= 0 ? "N" : "S"));
         gps.add(dms(0x0002, lat));
         gps.add(ascii(0x0003, lon >= 0 ? "E" : "W"));
@@ -84,14 +84,14 @@ final class ExifJpeg {
     }
 
     /** GPSAltitudeRef 0 = above, 1 = below sea level; the altitude in centimetres. */
-    ExifJpeg altitude(int ref, long centimetres) {
+    public ExifJpeg altitude(int ref, long centimetres) {
         gps.add(byteValue(0x0005, ref));
         gps.add(rationals(0x0006, centimetres, 100));
         return this;
     }
 
     /** GPSImgDirectionRef (null = no ref tag) and GPSImgDirection in hundredths of a degree. */
-    ExifJpeg direction(String ref, long hundredths) {
+    public ExifJpeg direction(String ref, long hundredths) {
         if (ref != null) {
             gps.add(ascii(0x0010, ref));
         }
@@ -100,25 +100,25 @@ final class ExifJpeg {
     }
 
     /** FocalLength in hundredths of a millimetre. */
-    ExifJpeg focal(long hundredthsMm) {
+    public ExifJpeg focal(long hundredthsMm) {
         exif.add(rationals(0x920A, hundredthsMm, 100));
         return this;
     }
 
-    ExifJpeg focal35(int mm) {
+    public ExifJpeg focal35(int mm) {
         exif.add(shortValue(0xA405, mm));
         return this;
     }
 
     /** FocalPlaneX/YResolution in pixels per unit, with FocalPlaneResolutionUnit (2 inch, 3 cm, 4 mm). */
-    ExifJpeg focalPlane(long xNum, long xDen, long yNum, long yDen, int unit) {
+    public ExifJpeg focalPlane(long xNum, long xDen, long yNum, long yDen, int unit) {
         exif.add(rationals(0xA20E, xNum, xDen));
         exif.add(rationals(0xA20F, yNum, yDen));
         exif.add(shortValue(0xA210, unit));
         return this;
     }
 
-    ExifJpeg xmp(String rdfDescriptionAttributes) {
+    public ExifJpeg xmp(String rdfDescriptionAttributes) {
         xmp = "<?xpacket begin=\"\ufeff\" id=\"W5M0MpCehiHzreSzNTczkc9d\"?>"
                 + "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\"><rdf:RDF xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">"
                 + "<rdf:Description rdf:about=\"\" xmlns:drone-dji=\"http://www.dji.com/drone-dji/1.0/\""
@@ -189,11 +189,20 @@ final class ExifJpeg {
     }
 
     /** A w × h JPEG (stored size) with this metadata. */
-    byte[] jpeg(int width, int height) {
+    public byte[] jpeg(int width, int height) {
         BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         g.setColor(new Color(90, 140, 200));
         g.fillRect(0, 0, width, height);
+        g.dispose();
+        return jpeg(img);
+    }
+
+    /** A JPEG of this image (its RGB; stored as is) with this metadata. */
+    public byte[] jpeg(BufferedImage image) {
+        BufferedImage img = new BufferedImage(image.getWidth(), image.getHeight(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.drawImage(image, 0, 0, null);
         g.dispose();
         ByteArrayOutputStream plain = new ByteArrayOutputStream();
         try {
@@ -227,9 +236,16 @@ final class ExifJpeg {
         out.writeBytes(body);
     }
 
-    Path write(Path dir, String name, int width, int height) throws IOException {
+    public Path write(Path dir, String name, int width, int height) throws IOException {
         Path p = dir.resolve(name);
         Files.write(p, jpeg(width, height));
+        return p;
+    }
+
+    /** Writes a JPEG of {@code image} (a rendered view, say) with this metadata. */
+    public Path write(Path dir, String name, BufferedImage image) throws IOException {
+        Path p = dir.resolve(name);
+        Files.write(p, jpeg(image));
         return p;
     }
 }

@@ -65,6 +65,55 @@ class BatchCommandTest {
         assertEquals(2, Main.run("batch", "x.csv", "--out-dir", "o", "--dem-dir", "d", "--void-fill", "kriging"));
     }
 
+    /**
+     * The render options that apply to camera views are declared once too: {@code dempano photo} takes every one of
+     * them with the main command's default, refuses the panorama-only ones, and passes them into the request.
+     */
+    @Test
+    void photoTakesEveryRenderOptionOfTheMainCommandWithItsDefault() {
+        picocli.CommandLine.Model.CommandSpec main = new picocli.CommandLine(new Main()).getCommandSpec();
+        picocli.CommandLine.Model.CommandSpec photo = new picocli.CommandLine(new PhotoCommand()).getCommandSpec();
+        picocli.CommandLine.Model.CommandSpec shared = new picocli.CommandLine(new RenderOptions()).getCommandSpec();
+        assertTrue(shared.options().size() >= 11, "render options: " + shared.options().size());
+        for (picocli.CommandLine.Model.OptionSpec o : shared.options()) {
+            picocli.CommandLine.Model.OptionSpec inMain = main.findOption(o.longestName());
+            picocli.CommandLine.Model.OptionSpec inPhoto = photo.findOption(o.longestName());
+            assertTrue(inMain != null, "dempano lacks " + o.longestName());
+            assertTrue(inPhoto != null, "dempano photo lacks " + o.longestName());
+            assertEquals(inMain.defaultValue(), inPhoto.defaultValue(), o.longestName() + " default");
+            assertEquals(inMain.description()[0], inPhoto.description()[0], o.longestName() + " description");
+        }
+        // Panorama-only options are not the photo's: its view is the photo's own grid, its eye the photo's pose.
+        for (String panoramaOnly : List.of("--ppd", "--elevation-range", "--views", "--pfm")) {
+            assertTrue(photo.findOption(panoramaOnly) == null, "photo takes " + panoramaOnly);
+        }
+        // --offset-m and --eye-height-m stay the photo's own: unset unless given (EXIF or DEM otherwise).
+        assertEquals(null, photo.findOption("--offset-m").defaultValue());
+        // The values reach the request a photo is rendered with.
+        PhotoCommand cmd = new PhotoCommand();
+        new picocli.CommandLine(cmd).parseArgs("--dem-dir", "d", "--layers", "elevation,incidence", "--renderer", "reference",
+                "--range-km", "35", "--refraction", "0", "--supersampling", "2", "--no-exact-distances", "--near-m", "3");
+        dempano.PanoramaRequest r = cmd.render.applyTo(dempano.PanoramaRequest.at(0, 0), dempano.PanoramaRequest.DEFAULT_RANGE_METRES);
+        assertEquals(java.util.EnumSet.of(dempano.panorama.Layer.ELEVATION, dempano.panorama.Layer.INCIDENCE), r.layers());
+        assertEquals(35_000, r.rangeMetres(), 1e-9);
+        assertEquals(0, r.refraction().coefficient(), 0);
+        assertEquals(2, r.supersampling(), 0);
+        assertEquals(3, r.nearMetres(), 0);
+        assertFalse(r.exactDistances());
+        assertTrue(cmd.render.referenceRenderer());
+        // The defaults are those the photo command had before (100 km, k 0.13, supersampling 1, exact on).
+        PhotoCommand plain = new PhotoCommand();
+        new picocli.CommandLine(plain).parseArgs("--dem-dir", "d");
+        dempano.PanoramaRequest d = plain.render.applyTo(dempano.PanoramaRequest.at(0, 0), dempano.PanoramaRequest.DEFAULT_RANGE_METRES);
+        assertEquals(100_000, d.rangeMetres(), 0);
+        assertEquals(0.13, d.refraction().coefficient(), 0);
+        assertEquals(1, d.supersampling(), 0);
+        assertTrue(d.exactDistances());
+        // A bad value is a bad argument (exit 2), as in the other commands; so is a panorama-only option.
+        assertEquals(2, Main.run("photo", "--dem-dir", "d", "--void-fill", "kriging"));
+        assertEquals(2, Main.run("photo", "--dem-dir", "d", "--ppd", "30"));
+    }
+
     @Test
     void oneBadRowIsReportedInOneLineTheRestAreDoneAndEqualSingleRuns(@TempDir Path d) throws IOException {
         String lat = coordinate(vp[0]), lon = coordinate(vp[1]);
@@ -114,7 +163,7 @@ class BatchCommandTest {
     @ParameterizedTest(name = "[{index}] {2}")
     @CsvSource(delimiter = '|', value = {
             // CSV text (or - for no file) | exit | message
-            "id,lat\\na,1                  | 1    | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon)",
+            "id,lat\\na,1                  | 1    | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon; or id and image for photos)",
             "                               | 1    | v.csv: empty: want a header line naming the columns id,lat,lon",
             "-                              | 1    | cannot read the viewpoint file",
             "id,lat,lon\\na,\"1,2\\n       | 1    | v.csv: broken CSV after line 2",

@@ -63,6 +63,7 @@ final class RowRenderer {
         Path tmp = null;
         try {
             tmp = Files.createTempDirectory("dempano-row-");
+            row = localImage(row, cells.get(ViewpointCsv.IMAGE), tmp);
             PanoramaRenderer r = ExecutorRenderer.get(settings);
             BatchSummary s = new BatchRenderer(r, tmp, settings.writing()).render(List.of(row), null);
             BatchResult result = s.results().get(0);
@@ -112,10 +113,30 @@ final class RowRenderer {
         }
         BatchRow r = rows.get(0);
         if (r.valid()) {
-            return BatchRow.of(r.id(), r.request());
+            return new BatchRow(0, r.id(), r.request(), r.photo(), null);
         }
         String e = r.error();
         return BatchRow.invalid(0, id, where + (e.startsWith("line 2: ") ? e.substring("line 2: ".length()) : e));
+    }
+
+    /**
+     * A photo row whose image is a Hadoop URI ({@code hdfs://…}, {@code s3a://…}, {@code file:/…}) with the image
+     * copied into the row's local folder first; other rows as they are (a plain path is a local file of the node).
+     */
+    private BatchRow localImage(BatchRow row, String imageCell, Path tmp) throws IOException {
+        if (row.photo() == null || imageCell == null || !imageCell.strip().matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")) {
+            return row;
+        }
+        org.apache.hadoop.fs.Path remote = new org.apache.hadoop.fs.Path(imageCell.strip());
+        Path local = tmp.resolve("image-" + remote.getName());
+        FileSystem imageFs = remote.getFileSystem(Hadoop.configuration(settings.hadoop));
+        try {
+            imageFs.copyToLocalFile(false, remote, new org.apache.hadoop.fs.Path(local.toUri()), true);
+        } catch (IOException e) {
+            throw new IOException("cannot read the image " + imageCell.strip() + ": " + e.getMessage(), e);
+        }
+        return new BatchRow(row.lineNumber(), row.id(), row.request(),
+                new dempano.batch.BatchPhoto(local, row.photo().overrides()), null);
     }
 
     private void copy(List<Path> files) throws IOException {

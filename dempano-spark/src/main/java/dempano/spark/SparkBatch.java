@@ -21,6 +21,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.NoSuchElementException;
+import org.apache.commons.csv.CSVFormat;
+import org.apache.commons.csv.CSVParser;
+import org.apache.commons.csv.CSVRecord;
 import org.apache.spark.api.java.JavaRDD;
 import org.apache.spark.api.java.function.FlatMapFunction;
 import org.apache.spark.sql.Column;
@@ -69,8 +72,20 @@ public final class SparkBatch {
     }
 
     /**
+     * The column that carries a CSV row's field-count error ("3 fields, the header has 5"; null for a good row):
+     * that row is an error line in the results, as in {@code dempano batch}.
+     */
+    public static final String FIELDS_ERROR = "_dempano_fields_error";
+
+    /**
      * Reads a viewpoint table: Parquet when the path ends in .parquet (or format says so), else CSV with
-     * a header line (every cell read as text, as {@code dempano batch} reads it).
+     * a header line, parsed as {@code dempano batch} parses it (commons-csv: RFC 4180 quoting, cells trimmed,
+     * blank lines skipped, every cell text). A CSV row with more or fewer fields than the header is kept with
+     * its field-count error in {@link #FIELDS_ERROR} (Spark's own CSV reader fills or drops such fields
+     * silently). The CSV is parsed on the driver (a folder: its files in name order, the first one's header
+     * line for all), so its rows must fit in the driver's memory: about 200 bytes a row, 200 MB for 10^6 rows.
+     *
+     * @throws IllegalArgumentException naming the file, for a file that cannot be read, is empty or broken
      */
     public static Dataset<Row> read(SparkSession spark, String input, String format) {
         boolean parquet = "parquet".equalsIgnoreCase(format)
@@ -78,9 +93,70 @@ public final class SparkBatch {
         if (parquet) {
             return spark.read().parquet(input);
         }
-        return spark.read().option("header", "true").option("inferSchema", "false").option("encoding", "UTF-8")
-                .option("ignoreLeadingWhiteSpace", "true").option("ignoreTrailingWhiteSpace", "true")
-                .option("escape", "\"").csv(input);
+        List<String> header = null;
+        List<Row> rows = new ArrayList<>();
+        try {
+            org.apache.hadoop.fs.Path in = new org.apache.hadoop.fs.Path(input);
+            org.apache.hadoop.fs.FileSystem fs = in.getFileSystem(spark.sparkContext().hadoopConfiguration());
+            List<org.apache.hadoop.fs.Path> files = new ArrayList<>();
+            if (fs.getFileStatus(in).isDirectory()) {
+                for (org.apache.hadoop.fs.FileStatus st : fs.listStatus(in)) {
+                    String n = st.getPath().getName();
+                    if (st.isFile() && !n.startsWith(".") && !n.startsWith("_")) {
+                        files.add(st.getPath());
+                    }
+                }
+                files.sort(java.util.Comparator.comparing(org.apache.hadoop.fs.Path::getName));
+            } else {
+                files.add(in);
+            }
+            CSVFormat csv = CSVFormat.DEFAULT.builder().setIgnoreEmptyLines(true).setIgnoreSurroundingSpaces(true)
+                    .setTrim(true).get();
+            for (org.apache.hadoop.fs.Path f : files) {
+                boolean headerLine = true;
+                try (java.io.Reader r = new java.io.InputStreamReader(fs.open(f), java.nio.charset.StandardCharsets.UTF_8);
+                     CSVParser parser = CSVParser.parse(new java.io.BufferedReader(r), csv)) {
+                    for (CSVRecord rec : parser) {
+                        List<String> cells = rec.toList();
+                        if (cells.stream().allMatch(String::isEmpty)) {
+                            continue;
+                        }
+                        if (headerLine) {
+                            headerLine = false;
+                            if (!cells.isEmpty() && cells.get(0).startsWith("\uFEFF")) {
+                                cells = new ArrayList<>(cells);
+                                cells.set(0, cells.get(0).substring(1));
+                            }
+                            if (header == null) {
+                                header = cells;
+                            }
+                            continue;
+                        }
+                        Object[] values = new Object[header.size() + 1];
+                        for (int i = 0; i < header.size(); i++) {
+                            values[i] = i < cells.size() && !cells.get(i).isEmpty() ? cells.get(i) : null;
+                        }
+                        if (cells.size() != header.size()) {
+                            values[header.size()] = cells.size() + " fields, the header has " + header.size();
+                        }
+                        rows.add(RowFactory.create(values));
+                    }
+                } catch (java.io.UncheckedIOException | IllegalStateException e) {
+                    throw new IllegalArgumentException(f + ": broken CSV (" + e.getMessage() + ")", e);
+                }
+            }
+        } catch (java.io.IOException e) {
+            throw new IllegalArgumentException("cannot read the viewpoint table " + input + ": " + e.getMessage(), e);
+        }
+        if (header == null) {
+            throw new IllegalArgumentException(input + ": empty: want a header line naming the columns id,lat,lon");
+        }
+        StructType schema = new StructType();
+        for (String h : header) {
+            schema = schema.add(h, DataTypes.StringType);
+        }
+        schema = schema.add(FIELDS_ERROR, DataTypes.StringType);
+        return spark.createDataFrame(rows, schema);
     }
 
     /** Renders every row of the table; see the class comment. */
@@ -98,13 +174,15 @@ public final class SparkBatch {
             }
         }
         for (String required : List.of(ViewpointCsv.ID, ViewpointCsv.LAT, ViewpointCsv.LON)) {
-            if (!known.containsKey(required)) {
+            if (!known.containsKey(required) && (required.equals(ViewpointCsv.ID) || !known.containsKey(ViewpointCsv.IMAGE))) {
                 throw new IllegalArgumentException("the table has no column '" + required + "' (it has: "
-                        + String.join(", ", table.columns()) + "; required: id, lat, lon)");
+                        + String.join(", ", table.columns()) + "; required: id, lat, lon; or id and image for photos)");
             }
         }
         List<Column> cells = new ArrayList<>();
         known.forEach((n, c) -> cells.add(col("`" + c + "`").cast(DataTypes.StringType).as(n)));
+        cells.add(java.util.Arrays.asList(table.columns()).contains(FIELDS_ERROR) ? col(FIELDS_ERROR)
+                : lit(null).cast(DataTypes.StringType).as(FIELDS_ERROR));
         Dataset<Row> rows = table.select(cells.toArray(new Column[0])).withColumn(SEQ, monotonically_increasing_id());
 
         // Repeated ids (without regard to case, among safe ids), the first in table order kept, as dempano batch does.
@@ -115,8 +193,11 @@ public final class SparkBatch {
         rows = rows.withColumn(DUP, when(row_number().over(byId).gt(1),
                 concat(lit("row '"), first(id).over(byId), lit("'"))));
 
-        rows = rows.withColumn(LAT, col(ViewpointCsv.LAT).cast(DataTypes.DoubleType))
-                .withColumn(LON, col(ViewpointCsv.LON).cast(DataTypes.DoubleType))
+        // Photo rows without lat/lon (the position in the photo's EXIF) sort first, together.
+        rows = rows.withColumn(LAT, known.containsKey(ViewpointCsv.LAT) ? col(ViewpointCsv.LAT).cast(DataTypes.DoubleType)
+                        : lit(null).cast(DataTypes.DoubleType))
+                .withColumn(LON, known.containsKey(ViewpointCsv.LON) ? col(ViewpointCsv.LON).cast(DataTypes.DoubleType)
+                        : lit(null).cast(DataTypes.DoubleType))
                 .withColumn(TLAT, floor(col(LAT))).withColumn(TLON, floor(col(LON)));
         int n = Math.max(1, partitions);
         rows = switch (order) {
@@ -154,6 +235,7 @@ public final class SparkBatch {
             c.add(col(n));
         }
         c.add(col(DUP));
+        c.add(col(FIELDS_ERROR));
         return c.toArray(new Column[0]);
     }
 
@@ -187,7 +269,11 @@ public final class SparkBatch {
                     for (int i = 0; i < names.size(); i++) {
                         cells.put(names.get(i), r.getString(i));
                     }
-                    RowRenderer.Outcome o = renderer.render(cells.get(ViewpointCsv.ID), cells, r.getString(names.size()));
+                    String fieldsError = r.getString(names.size() + 1);
+                    String id = cells.get(ViewpointCsv.ID);
+                    RowRenderer.Outcome o = fieldsError != null
+                            ? RowRenderer.Outcome.error(id == null ? "" : id, "row '" + (id == null ? "" : id) + "': " + fieldsError, 0)
+                            : renderer.render(id, cells, r.getString(names.size()));
                     return RowFactory.create(o.id(), o.status(), o.files(), String.format(Locale.ROOT, "%.3f", o.seconds()),
                             o.error());
                 }

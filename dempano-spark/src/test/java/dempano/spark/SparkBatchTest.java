@@ -20,7 +20,11 @@ import java.util.stream.Stream;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVParser;
 import org.apache.commons.csv.CSVRecord;
+import org.apache.spark.sql.Row;
+import org.apache.spark.sql.RowFactory;
 import org.apache.spark.sql.SparkSession;
+import org.apache.spark.sql.types.DataTypes;
+import org.apache.spark.sql.types.StructType;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -125,6 +129,131 @@ class SparkBatchTest {
                 assertEquals(withoutTimings(new String(a, StandardCharsets.UTF_8)), withoutTimings(new String(b, StandardCharsets.UTF_8)), f);
             } else {
                 assertArrayEquals(a, b, f + " differs");
+            }
+        }
+    }
+
+    /**
+     * Photo rows (an image column, camera values in columns) and rows with the wrong number of fields: the Spark
+     * job's files equal {@code dempano batch}'s byte for byte, each bad row is its own error line; and the same
+     * table written as Parquet by Spark gives the same files as the CSV.
+     */
+    @Test
+    void photoRowsAndFieldCountErrorsAsInBatchModeAndParquetAsCsv() throws IOException {
+        Path dem = DemoTerrain.ensure(tmp.resolve("dem"));
+        double[] vp = DemoTerrain.viewpoint();
+        Path dir = Files.createDirectories(tmp.resolve("photos"));
+        // A generated "photo" (a gradient, no EXIF): its size from the file, its camera from the row.
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(160, 120, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 120; y++) {
+            for (int x = 0; x < 160; x++) {
+                img.setRGB(x, y, (x * 255 / 160) << 16 | (y * 255 / 120) << 8 | 128);
+            }
+        }
+        Path photo = dir.resolve("photo.png");
+        javax.imageio.ImageIO.write(img, "png", photo.toFile());
+        String lat = String.format(Locale.ROOT, "%.4f", vp[0]), lon = String.format(Locale.ROOT, "%.4f", vp[1]);
+        String north = String.format(Locale.ROOT, "%.4f", vp[0] + 0.05);
+        String header = "id,lat,lon,altitude_m,image,heading_deg,pitch_deg,roll_deg,hfov_deg";
+        List<String[]> good = List.of(
+                new String[] {"view", lat, lon, "", "", "", "", "", ""},
+                new String[] {"east", lat, lon, "", photo.toString(), "90", "-3", "0", "60"},
+                new String[] {"south", north, lon, "3000", photo.toString(), "180", "2", "5", "40"},
+                new String[] {"gone", lat, lon, "", dir.resolve("gone.png").toString(), "90", "0", "0", "60"},
+                new String[] {"noimage", lat, lon, "", "", "45", "", "", ""});
+        StringBuilder text = new StringBuilder(header + "\n");
+        good.forEach(r -> text.append(String.join(",", r)).append('\n'));
+        text.append("short,").append(lat).append(',').append(lon).append('\n');
+        text.append("long,").append(lat).append(',').append(lon).append(",,,,,,,extra\n");
+        Path csv = Files.writeString(tmp.resolve("photos.csv"), text.toString(), StandardCharsets.UTF_8);
+
+        Path batchOut = tmp.resolve("photo-batch");
+        List<String> batchArgs = new ArrayList<>(List.of(csv.toString(), "--out-dir", batchOut.toString(), "--dem-dir", dem.toString()));
+        batchArgs.addAll(List.of(OPTIONS));
+        assertEquals(BatchCommand.EXIT_SOME_ROWS_FAILED, new CommandLine(new BatchCommand()).execute(batchArgs.toArray(new String[0])));
+
+        Path sparkOut = tmp.resolve("photo-spark");
+        SparkBatchMain main = new SparkBatchMain();
+        List<String> sparkArgs = new ArrayList<>(List.of(csv.toString(), "--out-dir", sparkOut.toUri().toString(), "--dem-dir", dem.toString()));
+        sparkArgs.addAll(List.of(OPTIONS));
+        new CommandLine(main).parseArgs(sparkArgs.toArray(new String[0]));
+        SparkBatch.Summary s = SparkBatch.run(spark, SparkBatch.read(spark, csv.toString(), null), main.settings(),
+                SparkBatch.Order.TILE, 2, 1);
+        assertEquals(7, s.rows());
+        assertEquals(3, s.ok());
+
+        Map<String, CSVRecord> batch = byId(records(batchOut.resolve("results.csv")));
+        Map<String, CSVRecord> sparkResults = byId(sparkRecords(sparkOut));
+        assertEquals(batch.keySet(), sparkResults.keySet());
+        for (String id : batch.keySet()) {
+            assertEquals(batch.get(id).get("status"), sparkResults.get(id).get("status"), id);
+            assertEquals(batch.get(id).get("files"), sparkResults.get(id).get("files"), id);
+        }
+        assertEquals("east.png east-distance.npy east-overlay.png east.json", sparkResults.get("east").get("files"));
+        assertEquals("row 'short': 3 fields, the header has 9", sparkResults.get("short").get("error"));
+        assertEquals("row 'long': 10 fields, the header has 9", sparkResults.get("long").get("error"));
+        assertEquals("line 7: 3 fields, the header has 9", batch.get("short").get("error"));
+        assertTrue(sparkResults.get("gone").get("error").contains("gone.png"), sparkResults.get("gone").get("error"));
+        assertTrue(sparkResults.get("noimage").get("error").contains("heading_deg is for photo rows"),
+                sparkResults.get("noimage").get("error"));
+        assertSameFiles(batchOut, sparkOut, 12);
+
+        // The good rows as a Parquet table (numbers as doubles, as a typed table has them) give the same files.
+        StructType schema = new StructType().add("id", DataTypes.StringType).add("lat", DataTypes.DoubleType)
+                .add("lon", DataTypes.DoubleType).add("altitude_m", DataTypes.DoubleType).add("image", DataTypes.StringType)
+                .add("heading_deg", DataTypes.DoubleType).add("pitch_deg", DataTypes.DoubleType)
+                .add("roll_deg", DataTypes.DoubleType).add("hfov_deg", DataTypes.DoubleType);
+        List<Row> typed = new ArrayList<>();
+        for (String[] r : good) {
+            Object[] v = new Object[r.length];
+            for (int i = 0; i < r.length; i++) {
+                boolean isText = i == 0 || i == 4;
+                v[i] = r[i].isEmpty() ? null : isText ? r[i] : (Object) Double.parseDouble(r[i]);
+            }
+            typed.add(RowFactory.create(v));
+        }
+        String parquet = tmp.resolve("photos.parquet").toString();
+        spark.createDataFrame(typed, schema).write().mode("overwrite").parquet(parquet);
+        Path parquetOut = tmp.resolve("photo-parquet");
+        SparkBatchMain pm = new SparkBatchMain();
+        List<String> parquetArgs = new ArrayList<>(List.of(parquet, "--out-dir", parquetOut.toUri().toString(), "--dem-dir", dem.toString()));
+        parquetArgs.addAll(List.of(OPTIONS));
+        new CommandLine(pm).parseArgs(parquetArgs.toArray(new String[0]));
+        SparkBatch.Summary ps = SparkBatch.run(spark, SparkBatch.read(spark, parquet, null), pm.settings(),
+                SparkBatch.Order.TILE, 2, 1);
+        assertEquals(5, ps.rows());
+        assertEquals(3, ps.ok());
+        Map<String, CSVRecord> fromParquet = byId(sparkRecords(parquetOut));
+        for (String id : fromParquet.keySet()) {
+            assertEquals(sparkResults.get(id).get("status"), fromParquet.get(id).get("status"), id);
+            assertEquals(sparkResults.get(id).get("files"), fromParquet.get(id).get("files"), id);
+        }
+        assertSameFiles(sparkOut, parquetOut, 12);
+    }
+
+    static List<CSVRecord> sparkRecords(Path out) throws IOException {
+        List<CSVRecord> rows = new ArrayList<>();
+        try (Stream<Path> parts = Files.list(out.resolve("results"))) {
+            for (Path p : parts.filter(p -> p.getFileName().toString().startsWith("part-")).sorted().toList()) {
+                rows.addAll(records(p));
+            }
+        }
+        return rows;
+    }
+
+    /** The same file names in both folders (results aside), every file equal bit for bit, the JSON's timings aside. */
+    static void assertSameFiles(Path a, Path b, int count) throws IOException {
+        List<String> as = names(a), bs = names(b);
+        as.removeAll(List.of("results.csv", "results"));
+        bs.removeAll(List.of("results.csv", "results"));
+        assertEquals(as, bs);
+        assertEquals(count, as.size(), as.toString());
+        for (String f : as) {
+            byte[] x = Files.readAllBytes(a.resolve(f)), y = Files.readAllBytes(b.resolve(f));
+            if (f.endsWith(".json")) {
+                assertEquals(withoutTimings(new String(x, StandardCharsets.UTF_8)), withoutTimings(new String(y, StandardCharsets.UTF_8)), f);
+            } else {
+                assertArrayEquals(x, y, f + " differs");
             }
         }
     }

@@ -1,0 +1,228 @@
+package dempano.photo;
+
+import com.google.gson.GsonBuilder;
+import dempano.CameraImage;
+import dempano.CameraRequest;
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.camera.CameraOrientation;
+import dempano.camera.PhotoCamera;
+import dempano.camera.PhotoMetadata;
+import dempano.camera.PhotoMetadataException;
+import dempano.camera.PhotoOverrides;
+import dempano.io.CameraWriter;
+import dempano.io.OutputSet;
+import dempano.orient.PhotoOrientation;
+import dempano.summits.SummitList;
+import dempano.summits.SummitProjector;
+import dempano.summits.SummitSighting;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import javax.imageio.ImageIO;
+
+/**
+ * One photograph's job, on a renderer the caller holds open (so that many photos share its tiles, caches and
+ * GL context): the camera from the photo's EXIF/XMP and the overrides; the heading, pitch, roll or field of
+ * view that neither gives estimated from the photo's skyline ({@link PhotoOrientation}); the camera view
+ * rendered; the summits in frame; and the files for prefix P written as one {@link OutputSet}:
+ * {@code P.png}, {@code P-distance.npy}, {@code P-overlay.png}, {@code P.json}, with summits
+ * {@code P-summits.json/csv}, and after an estimate {@code P-orientation.png/json}. {@code dempano photo},
+ * {@code dempano batch} and the Spark job all run photos through here. Stateless.
+ *
+ * <pre>{@code
+ * try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+ *     for (Path jpg : photos) {
+ *         PhotoJob.run(r, PhotoJob.Input.of(jpg, settings, "out/" + name(jpg)), PhotoJob.Log.NONE);
+ *     }
+ * }
+ * }</pre>
+ */
+public final class PhotoJob {
+    private PhotoJob() {
+    }
+
+    /**
+     * What to render for one photo.
+     *
+     * @param image           the photograph (JPEG, PNG, ...); null for a camera from the overrides alone
+     * @param overrides       values that replace (or stand in for) the photo's metadata
+     * @param widthPx         without an image: the image width, pixels; null with one (its own size is used)
+     * @param heightPx        without an image: the image height, pixels; null with one
+     * @param headingRangeDeg estimate the heading within ± this many degrees of the one given (override or
+     *                        compass), degrees; NaN = take a given heading as it is
+     * @param settings        range, refraction, supersampling, exact distances, layers, ... for the render; its
+     *                        viewpoint, offset, altitude and eye height are replaced by the camera's pose
+     * @param summits         the summit list for {@code P-summits.json/csv} and overlay labels; null = none
+     * @param outPrefix       the output prefix P (its folder must exist)
+     */
+    public record Input(Path image, PhotoOverrides overrides, Integer widthPx, Integer heightPx, double headingRangeDeg,
+                        PanoramaRequest settings, SummitList summits, String outPrefix) {
+        public Input {
+            Objects.requireNonNull(overrides, "overrides");
+            Objects.requireNonNull(settings, "settings");
+            Objects.requireNonNull(outPrefix, "outPrefix");
+        }
+
+        /** A photo with its metadata and no overrides, heading as given, no summits. */
+        public static Input of(Path image, PanoramaRequest settings, String outPrefix) {
+            return new Input(Objects.requireNonNull(image, "image"), PhotoOverrides.NONE, null, null, Double.NaN,
+                    settings, null, outPrefix);
+        }
+    }
+
+    /** Where the job's messages go: progress lines (stages, provenance) and result lines (an estimate's summary). */
+    public interface Log {
+        /** Says nothing. */
+        Log NONE = new Log() { };
+
+        /** A progress line: a render stage, where a camera value came from. */
+        default void progress(String line) {
+        }
+
+        /** A result line: what an orientation estimate found. */
+        default void result(String line) {
+        }
+    }
+
+    /**
+     * What the job made.
+     *
+     * @param camera the camera rendered (after any estimate), with where each value came from
+     * @param image  the rendered camera view
+     * @param files  the files written, {@code P.json} before the orientation files
+     */
+    public record Result(PhotoCamera camera, CameraImage image, List<Path> files) {
+        public Result {
+            files = List.copyOf(files);
+        }
+    }
+
+    /**
+     * Runs the job. Nothing is written unless everything succeeds.
+     *
+     * @throws IllegalArgumentException naming the problem (or the flag that supplies a missing value) for a
+     *                                  photo whose camera cannot be had: unreadable or corrupt, missing
+     *                                  metadata, a skyline that gives no estimate
+     * @throws IOException              when the outputs cannot be written (the message names the file)
+     */
+    public static Result run(PanoramaRenderer renderer, Input in, Log log) throws IOException {
+        PhotoOverrides o = in.overrides();
+        PhotoMetadata meta;
+        BufferedImage photo = null;
+        if (in.image() != null) {
+            if (in.widthPx() != null || in.heightPx() != null) {
+                throw new IllegalArgumentException("--width-px and --height-px are for a camera without a photo: the"
+                        + " photo's own size is used");
+            }
+            try {
+                meta = PhotoMetadata.read(in.image());
+            } catch (PhotoMetadataException e) {
+                throw new IllegalArgumentException(e.getMessage(), e);
+            }
+            BufferedImage stored;
+            try {
+                stored = ImageIO.read(in.image().toFile());
+            } catch (IOException | RuntimeException e) {
+                throw new IllegalArgumentException(in.image() + ": corrupt photograph, its pixels cannot be decoded ("
+                        + e.getMessage() + ")", e);
+            }
+            if (stored != null) {
+                photo = CameraWriter.displayed(stored, meta.orientation());
+            }
+        } else {
+            if (in.widthPx() == null || in.heightPx() == null || in.widthPx() < 1 || in.heightPx() < 1) {
+                throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
+                        + " camera from flags alone");
+            }
+            meta = new PhotoMetadata("camera from flags", in.widthPx(), in.heightPx(), 1, Double.NaN, Double.NaN,
+                    Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                    null, List.of());
+        }
+        // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
+        PhotoOrientation open = photo == null ? new PhotoOrientation(false, false, false, false)
+                : PhotoOrientation.open(meta, o, !Double.isNaN(in.headingRangeDeg()));
+        PhotoOverrides given = o;
+        if (open.any()) {
+            log.progress("estimating from the skyline: " + String.join(", ", open.names()));
+            o = open.placeholders(o);
+        }
+        PhotoCamera camera = resolve(meta, o);
+        camera.provenance().forEach(log::progress);
+        PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
+        BufferedImage orientationOverlay = null;
+        String orientationJson = null;
+        if (open.any()) {
+            CameraOrientation k = camera.pose().orientation();
+            PhotoOrientation.Result est;
+            try {
+                est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
+                                .withAltitudeMetres(camera.pose().altitudeMetres())
+                                .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
+                        photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
+                        // The range is a prior only around a heading that was given (override or metadata).
+                        Double.isNaN(in.headingRangeDeg()) || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
+                                ? Double.NaN : in.headingRangeDeg());
+            } catch (IllegalArgumentException e) {
+                List<String> missing = meta.missing(given);
+                throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
+                        + " from the photo: " + e.getMessage() + (missing.isEmpty() ? "" : "; give them instead:\n  - "
+                        + String.join("\n  - ", missing)), e);
+            }
+            String line = est.provenance(open);
+            log.result(line);
+            camera = resolve(meta, open.apply(given, est.estimate()));
+            List<String> prov = new ArrayList<>(camera.provenance());
+            prov.add(line);
+            camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
+            orientationOverlay = est.overlay();
+            orientationJson = new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues().create()
+                    .toJson(est.estimate());
+        }
+        CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
+        List<SummitSighting> sightings = in.summits() == null ? null : SummitProjector.project(rendered, in.summits());
+        try (OutputSet set = OutputSet.open(in.outPrefix())) {
+            List<Path> files = new ArrayList<>(CameraWriter.stage(set, rendered,
+                    new CameraWriter.Extras(photo, sightings, camera.provenance())));
+            if (orientationOverlay != null) {
+                byte[] png = pngBytes(orientationOverlay);
+                String json = orientationJson + "\n";
+                files.add(set.write("-orientation.png", out -> out.write(png)));
+                files.add(set.write("-orientation.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
+            }
+            set.commit();
+            return new Result(camera, rendered, files);
+        }
+    }
+
+    private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o) {
+        try {
+            return meta.resolve(o);
+        } catch (PhotoMetadataException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+    }
+
+    /**
+     * The render settings at the camera's position: the viewpoint and everything that places the eye (offset,
+     * altitude, eye height, summit snap, clear view) are a fresh request's, since the camera's pose places it.
+     */
+    static PanoramaRequest atCamera(PanoramaRequest d, double latDeg, double lonDeg) {
+        PanoramaRequest b = PanoramaRequest.at(latDeg, lonDeg);
+        return new PanoramaRequest(latDeg, lonDeg, b.offsetMetres(), b.altitudeMetres(), b.eyeHeightMetres(), d.rangeMetres(),
+                d.pixelsPerDegree(), d.elevationRange(), d.refraction(), d.depthMode(), d.layers(), d.nearMetres(),
+                d.supersampling(), d.views(), d.missingTiles(), d.lodErrorPx(), d.colour(), d.distance(),
+                b.snapToSummitMetres(), b.clearViewMetres(), d.exactDistances());
+    }
+
+    private static byte[] pngBytes(BufferedImage image) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        ImageIO.write(image, "png", b);
+        return b.toByteArray();
+    }
+}
