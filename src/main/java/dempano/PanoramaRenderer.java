@@ -190,22 +190,25 @@ public final class PanoramaRenderer implements AutoCloseable {
      * camera's rays ({@link ViewLayout#forTarget}), drawn and resampled as a panorama's are, with exact
      * per-pixel distances when the settings ask for them. The silhouettes are drawn into the colour.
      *
-     * @throws IllegalStateException    on the CPU reference renderer (it sweeps panorama columns only)
+     * On the CPU reference renderer ({@link #openReference}) every pixel's own ray is cast on the triangulated
+     * surface instead ({@link dempano.reference.RayCastReference}); the views, depth mode and supersampling do not
+     * apply.
+     *
      * @throws IllegalArgumentException for a viewpoint without DEM data or a field of view too wide for
      *                                  perspective views
      */
     public CameraImage render(CameraRequest request, Consumer<String> progress) {
-        if (reference()) {
-            throw new IllegalStateException("the CPU reference renders panoramas only: a camera view needs OpenGL");
-        }
         PanoramaRequest req = request.settings();
         CameraView view = request.view();
-        ViewLayout layout = ViewLayout.forTarget(view, req.supersampling());
+        ViewLayout layout = reference() ? null : ViewLayout.forTarget(view, req.supersampling());
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
         Viewpoint eye = request.pose().viewpoint(mosaic);
         Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, eye, Double.NaN, Double.NaN, req.refraction()));
+        if (reference()) {
+            return renderCameraReference(request, scene, clock, progress);
+        }
         double viewPixelDeg = Math.toDegrees(2 * layout.halfWidthTan() / layout.widthPx());
         // Terrain wholly below the views' lowest ray, less three view pixels (the 4×4 neighbourhoods), is left out.
         double cullBelowDeg = layout.lowestElevationDeg() - 3 * viewPixelDeg;
@@ -217,6 +220,27 @@ public final class PanoramaRenderer implements AutoCloseable {
         PanoramaMetadata meta = metadata(req, scene, drawing(req, layout, drawn), clock.timings,
                 new ArrayList<>(mosaic.warnings()));
         return new CameraImage(view, request.pose(), images.argb(), req.distance() ? images.distance() : null, meta);
+    }
+
+    /** A camera's view by the CPU reference: every pixel's own ray cast on the triangulated surface. */
+    private CameraImage renderCameraReference(CameraRequest request, Scene scene, Stopwatch clock, Consumer<String> progress) {
+        PanoramaRequest req = request.settings();
+        CameraView view = request.view();
+        progress.accept("casting " + view.widthPx() + "×" + view.heightPx() + " rays on the CPU");
+        var result = dempano.reference.RayCastReference.render(
+                new dempano.reference.RayCastReference.Scene(scene.mosaic(), scene.eye(), req.refraction()),
+                req.rangeMetres(), view, req.colour());
+        clock.lap("render");
+        if (result.argb() != null) {
+            Silhouettes.draw(result.argb(), result.distanceMetres(), view.widthPx(), view.heightPx());
+        }
+        List<String> warnings = new ArrayList<>(scene.mosaic().warnings());
+        if (result.undecided() > 0) {
+            warnings.add(result.undecided() + " rays could not be decided (the eye inside the terrain?): NaN in the distances");
+        }
+        PanoramaMetadata meta = metadata(req, scene, new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0),
+                clock.timings, warnings);
+        return new CameraImage(view, request.pose(), result.argb(), req.distance() ? result.distanceMetres() : null, meta);
     }
 
     /** {@link #render(CameraRequest, Consumer)} without progress reports. */
