@@ -163,9 +163,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
-        long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
-        MemoryEstimate.of(req, !reference(), Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
-                .check(Runtime.getRuntime().maxMemory());
+        MemoryEstimate.of(req, !reference(), tileBytes(mosaic)).check(Runtime.getRuntime().maxMemory());
         Viewpoint requested = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
@@ -183,6 +181,12 @@ public final class PanoramaRenderer implements AutoCloseable {
         Drawn drawn = draw(req, scene, layout, req.pixelsPerDegree(), cullBelowDeg, clock, progress);
         Images images = stitch(req, scene, new PanoramaTarget(geometry), layout, drawn, clock, progress);
         return finish(req, scene, geometry, images, drawing(req, layout, drawn), clock, progress);
+    }
+
+    /** Bytes the mosaic's tiles take, for the memory estimate. */
+    private static long tileBytes(Mosaic mosaic) {
+        long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
+        return Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes());
     }
 
     /**
@@ -204,6 +208,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
+        MemoryEstimate.of(request, layout, tileBytes(mosaic)).checkCamera(Runtime.getRuntime().maxMemory());
         Viewpoint eye = request.pose().viewpoint(mosaic);
         Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, eye, Double.NaN, Double.NaN, req.refraction()));
         if (reference()) {
@@ -214,12 +219,33 @@ public final class PanoramaRenderer implements AutoCloseable {
         double cullBelowDeg = layout.lowestElevationDeg() - 3 * viewPixelDeg;
         Drawn drawn = draw(req, scene, layout, 1 / viewPixelDeg, cullBelowDeg, clock, progress);
         Images images = stitch(req, scene, view, layout, drawn, clock, progress);
+        return finishCamera(request, scene, images, drawing(req, layout, drawn), clock, progress, List.of());
+    }
+
+    /** A camera's silhouettes, layers, near-terrain warning and metadata. */
+    private CameraImage finishCamera(CameraRequest request, Scene scene, Images images, Drawing drawing, Stopwatch clock,
+                                     Consumer<String> progress, List<String> renderWarnings) {
+        PanoramaRequest req = request.settings();
+        CameraView view = request.view();
         if (images.argb() != null) {
             Silhouettes.draw(images.argb(), images.distance(), view.widthPx(), view.heightPx());
         }
-        PanoramaMetadata meta = metadata(req, scene, drawing(req, layout, drawn), clock.timings,
-                new ArrayList<>(mosaic.warnings()));
-        return new CameraImage(view, request.pose(), images.argb(), req.distance() ? images.distance() : null, meta);
+        if (!req.layers().isEmpty()) {
+            progress.accept("computing layers " + req.layers());
+        }
+        var layers = LayerComputer.compute(req.layers(), view, images.distance(),
+                new LayerComputer.Surroundings(scene.eye().eyeFrame(), req.refraction(), scene.mosaic()));
+        if (!req.layers().isEmpty()) {
+            clock.lap("layers");
+        }
+        List<String> warnings = new ArrayList<>(scene.mosaic().warnings());
+        warnings.addAll(renderWarnings);
+        if (req.distance()) {
+            NearTerrain.measure(view, images.distance(), NearTerrain.DEFAULT_NEAR_METRES).cameraWarning().ifPresent(warnings::add);
+        }
+        PanoramaMetadata meta = metadata(req, scene, drawing, clock.timings, warnings);
+        return new CameraImage(view, request.pose(),
+                new CameraImage.Pixels(images.argb(), req.distance() ? images.distance() : null, layers), meta);
     }
 
     /** A camera's view by the CPU reference: every pixel's own ray cast on the triangulated surface. */
@@ -231,16 +257,10 @@ public final class PanoramaRenderer implements AutoCloseable {
                 new dempano.reference.RayCastReference.Scene(scene.mosaic(), scene.eye(), req.refraction()),
                 req.rangeMetres(), view, req.colour());
         clock.lap("render");
-        if (result.argb() != null) {
-            Silhouettes.draw(result.argb(), result.distanceMetres(), view.widthPx(), view.heightPx());
-        }
-        List<String> warnings = new ArrayList<>(scene.mosaic().warnings());
-        if (result.undecided() > 0) {
-            warnings.add(result.undecided() + " rays could not be decided (the eye inside the terrain?): NaN in the distances");
-        }
-        PanoramaMetadata meta = metadata(req, scene, new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0),
-                clock.timings, warnings);
-        return new CameraImage(view, request.pose(), result.argb(), req.distance() ? result.distanceMetres() : null, meta);
+        List<String> undecided = result.undecided() == 0 ? List.of() : List.of(result.undecided()
+                + " rays could not be decided (the eye inside the terrain?): NaN in the distances");
+        return finishCamera(request, scene, new Images(result.argb(), result.distanceMetres()),
+                new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), clock, progress, undecided);
     }
 
     /** {@link #render(CameraRequest, Consumer)} without progress reports. */

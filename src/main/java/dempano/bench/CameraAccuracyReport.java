@@ -146,8 +146,8 @@ public final class CameraAccuracyReport {
     }
 
     static String line(Row r) {
-        return String.format(Locale.ROOT, "| %s | %.0f mm | %d | %.2e | %.2e | %.3f %% | %.3f %% | %d (%.3f %%) | %.1f (%.1f) | %.1f (%.1f) |",
-                r.scene(), r.lensMm(), r.relativeErrors().length, r.quantile(0.5), r.quantile(0.99),
+        return String.format(Locale.ROOT, "| %s | %.0f mm | %d | %.2f %% | %.2e | %.2e | %.3f %% | %.3f %% | %d (%.3f %%) | %.1f (%.1f) | %.1f (%.1f) |",
+                r.scene(), r.lensMm(), r.relativeErrors().length, 100 * (1 - r.shareOver(0)), r.quantile(0.5), r.quantile(0.99),
                 100 * r.shareOver(0.01), 100 * r.shareOver(0.05), r.skyMismatch(), 100.0 * r.skyMismatch() / r.pixels(),
                 r.glSeconds(), r.glCpuSeconds(), r.referenceSeconds(), r.referenceCpuSeconds());
     }
@@ -167,7 +167,11 @@ public final class CameraAccuracyReport {
                 pixel's own ray cast on the full-resolution triangulated surface, `dempano.reference.RayCastReference` with \
                 `TerrainRayProbe`, double precision). The two share the surface, nothing else.
 
-                Per pixel both see as terrain: relative distance error |GL − reference| / reference. Sky disagreement: \
+                Per pixel both see as terrain: relative distance error |GL − reference| / reference; "identical": the \
+                share of those pixels whose float32 distances are equal (the GL path's exact distances intersect the \
+                pixel's own ray with the triangle the views saw around it, in double precision, so where it found the \
+                triangle the reference found the two agree to the last bit; the rest are pixels where the two found \
+                different triangles). Sky disagreement: \
                 pixels one sees as sky and the other as terrain (share of all pixels). Times: wall seconds (process CPU \
                 seconds in brackets) on a 2-core machine shared with other work, so wall times are noisy; OpenGL is Mesa \
                 llvmpipe (no GPU). Missing neighbouring tiles are sea level in both renders.
@@ -179,8 +183,8 @@ public final class CameraAccuracyReport {
                             + " heading %.0f°, pitch %.1f°.\n", sc.name(), sc.description(), sc.latDeg(), sc.lonDeg(),
                     sc.wide().headingDeg(), sc.wide().pitchDeg(), sc.tele().headingDeg(), sc.tele().pitchDeg()));
         }
-        s.append("\n| scene | lens | terrain pixels | median | p99 | > 1 % | > 5 % | sky disagreement | GL s (CPU s) |"
-                + " reference s (CPU s) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        s.append("\n| scene | lens | terrain pixels | identical | median | p99 | > 1 % | > 5 % | sky disagreement | GL s (CPU s) |"
+                + " reference s (CPU s) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (Row r : rows) {
             s.append(line(r)).append('\n');
         }

@@ -56,6 +56,7 @@ public final class CameraWriter {
             if (extras.summits() != null) {
                 suffixes.addAll(List.of("-summits.json", "-summits.csv"));
             }
+            image.layers().forEach(l -> suffixes.add("-" + l.fileName() + ".npy"));
             set.checkTargets(suffixes);
             List<Path> files = new ArrayList<>();
             if (image.hasColour()) {
@@ -67,6 +68,10 @@ public final class CameraWriter {
                         image.widthPx())));
                 BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
                 files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
+            }
+            for (dempano.panorama.Layer l : image.layers()) {
+                files.add(set.write("-" + l.fileName() + ".npy", FloatArrayWriter.npy(image.layerBuffer(l), image.heightPx(),
+                        image.widthPx())));
             }
             if (extras.summits() != null) {
                 String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
