@@ -137,27 +137,43 @@ public record NearTerrain(double nearMetres, double blockedColumnShare, double b
                 }
             }
         }
-        int coveredBins = 0, blockedBins = 0, bestStart = -1, bestLength = 0;
+        // The covered bins in azimuth order, starting after the widest gap between them (a camera's view does not
+        // wrap unless it covers north); between columns' rays lie uncovered bins, which neither end nor make a run.
+        int[] order = new int[bins];
+        int coveredBins = 0, blockedBins = 0;
         for (int b = 0; b < bins; b++) {
-            coveredBins += covered[b] ? 1 : 0;
-            blockedBins += blocked[b] ? 1 : 0;
-            if (blocked[b] && !blocked[(b + bins - 1) % bins]) {
-                int length = 0;
-                while (length < bins && blocked[(b + length) % bins]) {
-                    length++;
-                }
-                if (length > bestLength) {
-                    bestStart = b;
-                    bestLength = length;
-                }
+            if (covered[b]) {
+                order[coveredBins++] = b;
+                blockedBins += blocked[b] ? 1 : 0;
             }
         }
-        if (blockedBins == bins) {
-            bestStart = 0;
-            bestLength = bins;
+        int first = 0, widestGap = -1;
+        for (int k = 0; k < coveredBins; k++) {
+            int gap = Math.floorMod(order[(k + 1) % coveredBins] - order[k], bins);
+            if (gap > widestGap) {
+                widestGap = gap;
+                first = (k + 1) % coveredBins;
+            }
+        }
+        int bestStart = -1, bestEnd = -1, runStart = -1, bestLength = 0;
+        for (int k = 0; k < coveredBins; k++) {
+            int b = order[(first + k) % coveredBins];
+            if (!blocked[b]) {
+                runStart = -1;
+                continue;
+            }
+            if (runStart < 0) {
+                runStart = b;
+            }
+            int length = Math.floorMod(b - runStart, bins) + 1;
+            if (length > bestLength) {
+                bestLength = length;
+                bestStart = runStart;
+                bestEnd = b;
+            }
         }
         double from = bestStart < 0 ? Double.NaN : bestStart * CAMERA_AZIMUTH_BIN_DEG;
-        double to = bestStart < 0 ? Double.NaN : ((bestStart + bestLength) * CAMERA_AZIMUTH_BIN_DEG) % 360;
+        double to = bestStart < 0 ? Double.NaN : ((bestEnd + 1) * CAMERA_AZIMUTH_BIN_DEG) % 360;
         return new NearTerrain(nearMetres, coveredBins == 0 ? 0 : blockedBins / (double) coveredBins,
                 above == 0 ? 0 : nearPixels / (double) above, nearest, highestEl, highestUp, from, to);
     }

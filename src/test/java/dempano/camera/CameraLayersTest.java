@@ -53,7 +53,7 @@ class CameraLayersTest {
     }
 
     @Test
-    void aSeaCamerasLayersMatchTheEllipsoidOnEveryPixel(@TempDir Path dir) throws Exception {
+    void aSeaCamerasLayersMatchTheEllipsoidOnEveryPixel(@TempDir Path tmp) throws Exception {
         CameraRequest req = seaCamera(EnumSet.allOf(Layer.class));
         CameraImage img;
         try (PanoramaRenderer cpu = PanoramaRenderer.openReference(sea())) {
@@ -108,9 +108,9 @@ class CameraLayersTest {
         // Facets are planes through ellipsoid points: their tilt from the ellipsoid is below a cell's angle, 90 m / R.
         assertTrue(worstInc < 0.002, report);
 
-        List<Path> files = CameraWriter.write(img, dir.resolve("p").toString(), CameraWriter.Extras.NONE);
+        List<Path> files = CameraWriter.write(img, tmp.resolve("p").toString(), CameraWriter.Extras.NONE);
         for (Layer l : Layer.values()) {
-            Path npy = dir.resolve("p-" + l.fileName() + ".npy");
+            Path npy = tmp.resolve("p-" + l.fileName() + ".npy");
             assertTrue(files.contains(npy), "written: " + npy);
             float[] back = readNpy(npy, h, w);
             assertEquals(0, java.util.Arrays.compare(img.layerArray(l), back), l + " round trip");
@@ -157,6 +157,10 @@ class CameraLayersTest {
             assertTrue(share > 0.9, "blocked share " + share);
             assertTrue(up.stream().anyMatch(s -> s.contains("terrain nearer than 50 m") && s.contains("of the camera's azimuths")),
                     up.toString());
+            // The run spans the camera's 60° field, across north: 330°–30° within a few pixels' azimuths.
+            var near = dempano.panorama.NearTerrain.measure(uphill.view(), uphill.distanceArray(), 50);
+            double span = Math.floorMod(Math.round(10 * (near.spanToAzimuthDeg() - near.spanFromAzimuthDeg())), 3600) / 10.0;
+            assertTrue(span > 54 && span <= 61 && near.spanFromAzimuthDeg() > 325, near.toString());
             assertFalse(down.stream().anyMatch(s -> s.contains("terrain nearer than")), down.toString());
         }
     }
@@ -173,13 +177,22 @@ class CameraLayersTest {
                 () -> MemoryEstimate.of(seaCamera(List.of()), null, 0).checkCamera(50L << 20));
         assertTrue(small.getMessage().contains("camera view"), small.getMessage());
         MemoryEstimate.of(seaCamera(List.of()), null, 0).checkCamera(1L << 30); // a small camera fits in 1 GB
-        for (boolean gl : new boolean[] {false, true}) {
-            try (PanoramaRenderer r = gl ? PanoramaRenderer.open(sea()) : PanoramaRenderer.openReference(sea())) {
-                InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> r.render(req));
-                assertTrue(e.getMessage().startsWith("this camera view needs about") && e.getMessage().contains("-Xmx")
-                        && e.getMessage().contains("300 M photo pixels"), e.getMessage());
-                assertTrue(e.estimate().heapBytes() > Runtime.getRuntime().maxMemory());
-            }
+        try (PanoramaRenderer r = PanoramaRenderer.openReference(sea())) {
+            InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> r.render(req));
+            assertTrue(e.getMessage().startsWith("this camera view needs about") && e.getMessage().contains("-Xmx")
+                    && e.getMessage().contains("300 M photo pixels"), e.getMessage());
+            assertTrue(e.estimate().heapBytes() > Runtime.getRuntime().maxMemory());
+        }
+        // OpenGL: 20000 px wide needs views wider than GL allows, refused by name; 16000 × 16000 fits the views
+        // (27 bytes per photo pixel while stitching: 7.6 GB) but not the heap.
+        CameraRequest square = new CameraRequest(CameraIntrinsics.fromFocal35mm(16_000, 16_000, 50), req.pose(), req.settings());
+        try (PanoramaRenderer r = PanoramaRenderer.open(sea())) {
+            IllegalArgumentException wide = assertThrows(IllegalArgumentException.class, () -> r.render(req));
+            assertTrue(wide.getMessage().contains("at most 16384"), wide.getMessage());
+            InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> r.render(square));
+            assertTrue(e.getMessage().startsWith("this camera view needs about") && e.getMessage().contains("256 M photo pixels"),
+                    e.getMessage());
+            assertTrue(e.estimate().viewPixels() >= 256_000_000L, e.getMessage());
         }
     }
 }
