@@ -15,6 +15,7 @@ public final class CameraImage {
     private final int[] argb;
     private final float[] distanceMetres;
     private final PanoramaMetadata metadata;
+    private final java.util.Map<dempano.panorama.Layer, float[]> layers;
 
     /**
      * @param argb           colour per pixel, row-major; null when not rendered
@@ -23,11 +24,55 @@ public final class CameraImage {
      * @param metadata       the eye as placed, tiles, timings and the renderer's settings (views are the camera's)
      */
     public CameraImage(CameraView view, CameraPose pose, int[] argb, float[] distanceMetres, PanoramaMetadata metadata) {
+        this(view, pose, new Pixels(argb, distanceMetres, java.util.Map.of()), metadata);
+    }
+
+    /**
+     * @param pixels   colour, distance and layers on the photo's pixel grid
+     * @param metadata the eye as placed, tiles, timings and the renderer's settings (views are the camera's)
+     */
+    public CameraImage(CameraView view, CameraPose pose, Pixels pixels, PanoramaMetadata metadata) {
         this.view = view;
         this.pose = pose;
-        this.argb = argb;
-        this.distanceMetres = distanceMetres;
+        this.argb = pixels.argb();
+        this.distanceMetres = pixels.distanceMetres();
         this.metadata = metadata;
+        java.util.Map<dempano.panorama.Layer, float[]> l = new java.util.EnumMap<>(dempano.panorama.Layer.class);
+        l.putAll(pixels.layers());
+        this.layers = java.util.Collections.unmodifiableMap(l);
+    }
+
+    /**
+     * What a render puts on the photo's pixel grid (row-major).
+     *
+     * @param argb           colour per pixel; null when not rendered
+     * @param distanceMetres distance per pixel, metres, +∞ sky, NaN without a ray; null when not rendered
+     * @param layers         requested layers ({@link dempano.panorama.Layer}), NaN for sky and pixels without a ray
+     */
+    public record Pixels(int[] argb, float[] distanceMetres, java.util.Map<dempano.panorama.Layer, float[]> layers) {
+    }
+
+    /** The layers rendered, in {@link dempano.panorama.Layer} order. */
+    public java.util.Set<dempano.panorama.Layer> layers() {
+        return layers.keySet();
+    }
+
+    /** A copy of a layer, row-major. */
+    public float[] layerArray(dempano.panorama.Layer layer) {
+        float[] a = layers.get(layer);
+        if (a == null) {
+            throw new IllegalArgumentException("layer " + layer.fileName() + " was not rendered");
+        }
+        return a.clone();
+    }
+
+    /** A layer as a read-only buffer (for writers), no copy. */
+    public java.nio.FloatBuffer layerBuffer(dempano.panorama.Layer layer) {
+        float[] a = layers.get(layer);
+        if (a == null) {
+            throw new IllegalArgumentException("layer " + layer.fileName() + " was not rendered");
+        }
+        return java.nio.FloatBuffer.wrap(a).asReadOnlyBuffer();
     }
 
     public CameraView view() {

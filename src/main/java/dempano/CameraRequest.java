@@ -9,9 +9,9 @@ import dempano.camera.PhotoCamera;
  * What to render for a camera: its intrinsics (the photo's pixel grid, lens included), its pose, and the render
  * settings a panorama request carries. Of {@code settings}, these apply: range, refraction, depth mode, near
  * plane, supersampling (view pixels per photo pixel at the finest, linear), missing-tile policy, level-of-detail
- * bound (in view pixels, about photo pixels), colour, distance and exact distances. The position (latitude,
- * longitude, offset, altitude, eye height) comes from the pose; the panorama's resolution, elevation range,
- * views, layers and viewpoint adjustments do not apply.
+ * bound (in view pixels, about photo pixels), colour, distance, exact distances and layers (on the photo's pixel
+ * grid). The position (latitude, longitude, offset, altitude, eye height) comes from the pose; the panorama's
+ * resolution, elevation range, views and viewpoint adjustments do not apply.
  *
  * @param intrinsics the camera model on the photo's pixels
  * @param pose       where the camera stands and which way it points

@@ -46,6 +46,36 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
                 withViews && req.exactDistances() && req.distance());
     }
 
+    /**
+     * The estimate for a camera's view: its views as {@link ViewLayout#forTarget} lays them out (null for the CPU
+     * reference, which holds no views), the photo's pixels in place of the panorama's (colour, distance, layers and
+     * the written pictures hold per pixel what a panorama's do).
+     */
+    public static MemoryEstimate of(CameraRequest req, ViewLayout layout, long tileBytes) {
+        PanoramaRequest s = req.settings();
+        long views = layout == null ? 0 : (long) layout.views() * layout.widthPx() * layout.heightPx();
+        return new MemoryEstimate(views, (long) req.intrinsics().widthPx() * req.intrinsics().heightPx(), s.layers().size(),
+                tileBytes, layout != null && s.exactDistances() && s.distance());
+    }
+
+    /**
+     * Refuses a camera view that needs more than {@code maxHeapBytes}.
+     *
+     * @throws InsufficientMemoryException with the figures and the way out
+     */
+    public void checkCamera(long maxHeapBytes) {
+        long need = heapBytes();
+        if (need <= maxHeapBytes) {
+            return;
+        }
+        throw new InsufficientMemoryException(String.format(Locale.ROOT,
+                "this camera view needs about %.2f GB of Java heap (%s) but the limit is %.2f GB: render a smaller image"
+                        + " (--width-px/--height-px, the intrinsics scaled with it; half the width and height needs a"
+                        + " quarter), or give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg",
+                need / 1e9, breakdown().replace("panorama pixels", "photo pixels"), maxHeapBytes / 1e9,
+                (int) Math.ceil(need / (double) (1L << 30)) + 1), this);
+    }
+
     /** Bytes held while the views are stitched. */
     public long stitchingBytes() {
         return (exactDistances ? 19 : 12) * viewPixels + 8 * panoramaPixels;

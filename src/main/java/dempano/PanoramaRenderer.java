@@ -163,9 +163,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
-        long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
-        MemoryEstimate.of(req, !reference(), Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes()))
-                .check(Runtime.getRuntime().maxMemory());
+        MemoryEstimate.of(req, !reference(), tileBytes(mosaic)).check(Runtime.getRuntime().maxMemory());
         Viewpoint requested = Double.isNaN(req.altitudeMetres())
                 ? Viewpoint.onDem(mosaic, req.latDeg(), req.lonDeg(), req.offsetMetres(), req.eyeHeightMetres())
                 : Viewpoint.atAltitude(mosaic, req.latDeg(), req.lonDeg(), req.altitudeMetres(), req.eyeHeightMetres());
@@ -185,38 +183,84 @@ public final class PanoramaRenderer implements AutoCloseable {
         return finish(req, scene, geometry, images, drawing(req, layout, drawn), clock, progress);
     }
 
+    /** Bytes the mosaic's tiles take, for the memory estimate. */
+    private static long tileBytes(Mosaic mosaic) {
+        long samplesPerTile = (long) (mosaic.intervalsPerDegree() + 1) * (mosaic.intervalsPerDegree() + 1);
+        return Math.max(2 * samplesPerTile * mosaic.tilesUsed().size(), mosaic.tileBytes());
+    }
+
     /**
      * Renders a camera's own view on its pixel grid through the panorama's pipeline: the views that cover the
      * camera's rays ({@link ViewLayout#forTarget}), drawn and resampled as a panorama's are, with exact
      * per-pixel distances when the settings ask for them. The silhouettes are drawn into the colour.
      *
-     * @throws IllegalStateException    on the CPU reference renderer (it sweeps panorama columns only)
+     * On the CPU reference renderer ({@link #openReference}) every pixel's own ray is cast on the triangulated
+     * surface instead ({@link dempano.reference.RayCastReference}); the views, depth mode and supersampling do not
+     * apply.
+     *
      * @throws IllegalArgumentException for a viewpoint without DEM data or a field of view too wide for
      *                                  perspective views
      */
     public CameraImage render(CameraRequest request, Consumer<String> progress) {
-        if (reference()) {
-            throw new IllegalStateException("the CPU reference renders panoramas only: a camera view needs OpenGL");
-        }
         PanoramaRequest req = request.settings();
         CameraView view = request.view();
-        ViewLayout layout = ViewLayout.forTarget(view, req.supersampling());
+        ViewLayout layout = reference() ? null : ViewLayout.forTarget(view, req.supersampling());
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
+        MemoryEstimate.of(request, layout, tileBytes(mosaic)).checkCamera(Runtime.getRuntime().maxMemory());
         Viewpoint eye = request.pose().viewpoint(mosaic);
         Scene scene = new Scene(mosaic, ViewpointAdjustment.apply(mosaic, eye, Double.NaN, Double.NaN, req.refraction()));
+        if (reference()) {
+            return renderCameraReference(request, scene, clock, progress);
+        }
         double viewPixelDeg = Math.toDegrees(2 * layout.halfWidthTan() / layout.widthPx());
         // Terrain wholly below the views' lowest ray, less three view pixels (the 4×4 neighbourhoods), is left out.
         double cullBelowDeg = layout.lowestElevationDeg() - 3 * viewPixelDeg;
         Drawn drawn = draw(req, scene, layout, 1 / viewPixelDeg, cullBelowDeg, clock, progress);
         Images images = stitch(req, scene, view, layout, drawn, clock, progress);
+        return finishCamera(request, scene, images, drawing(req, layout, drawn), clock, progress, List.of());
+    }
+
+    /** A camera's silhouettes, layers, near-terrain warning and metadata. */
+    private CameraImage finishCamera(CameraRequest request, Scene scene, Images images, Drawing drawing, Stopwatch clock,
+                                     Consumer<String> progress, List<String> renderWarnings) {
+        PanoramaRequest req = request.settings();
+        CameraView view = request.view();
         if (images.argb() != null) {
             Silhouettes.draw(images.argb(), images.distance(), view.widthPx(), view.heightPx());
         }
-        PanoramaMetadata meta = metadata(req, scene, drawing(req, layout, drawn), clock.timings,
-                new ArrayList<>(mosaic.warnings()));
-        return new CameraImage(view, request.pose(), images.argb(), req.distance() ? images.distance() : null, meta);
+        if (!req.layers().isEmpty()) {
+            progress.accept("computing layers " + req.layers());
+        }
+        var layers = LayerComputer.compute(req.layers(), view, images.distance(),
+                new LayerComputer.Surroundings(scene.eye().eyeFrame(), req.refraction(), scene.mosaic()));
+        if (!req.layers().isEmpty()) {
+            clock.lap("layers");
+        }
+        List<String> warnings = new ArrayList<>(scene.mosaic().warnings());
+        warnings.addAll(renderWarnings);
+        if (req.distance()) {
+            NearTerrain.measure(view, images.distance(), NearTerrain.DEFAULT_NEAR_METRES).cameraWarning().ifPresent(warnings::add);
+        }
+        PanoramaMetadata meta = metadata(req, scene, drawing, clock.timings, warnings);
+        return new CameraImage(view, request.pose(),
+                new CameraImage.Pixels(images.argb(), req.distance() ? images.distance() : null, layers), meta);
+    }
+
+    /** A camera's view by the CPU reference: every pixel's own ray cast on the triangulated surface. */
+    private CameraImage renderCameraReference(CameraRequest request, Scene scene, Stopwatch clock, Consumer<String> progress) {
+        PanoramaRequest req = request.settings();
+        CameraView view = request.view();
+        progress.accept("casting " + view.widthPx() + "×" + view.heightPx() + " rays on the CPU");
+        var result = dempano.reference.RayCastReference.render(
+                new dempano.reference.RayCastReference.Scene(scene.mosaic(), scene.eye(), req.refraction()),
+                req.rangeMetres(), view, req.colour());
+        clock.lap("render");
+        List<String> undecided = result.undecided() == 0 ? List.of() : List.of(result.undecided()
+                + " rays could not be decided (the eye inside the terrain?): NaN in the distances");
+        return finishCamera(request, scene, new Images(result.argb(), result.distanceMetres()),
+                new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), clock, progress, undecided);
     }
 
     /** {@link #render(CameraRequest, Consumer)} without progress reports. */

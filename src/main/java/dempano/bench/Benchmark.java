@@ -2,10 +2,13 @@ package dempano.bench;
 
 import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
+import dempano.CameraImage;
+import dempano.CameraRequest;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.dem.DemDirectory;
 import dempano.dem.HgtTile;
+import dempano.io.CameraWriter;
 import dempano.io.PanoramaWriter;
 import dempano.panorama.DistanceComparison;
 import dempano.panorama.Panorama;
@@ -54,10 +57,32 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
 
     /** One measured configuration. */
     record Case(String name, String scene, String dem, double lat, double lon, double rangeKm, double ppd, double lodPx,
-                boolean colour, boolean distance, String renderer, String heap, boolean compare) {
+                boolean colour, boolean distance, String renderer, String heap, boolean compare, Camera camera) {
+        /** A panorama case. */
+        Case(String name, String scene, String dem, double lat, double lon, double rangeKm, double ppd, double lodPx,
+             boolean colour, boolean distance, String renderer, String heap, boolean compare) {
+            this(name, scene, dem, lat, lon, rangeKm, ppd, lodPx, colour, distance, renderer, heap, compare, null);
+        }
+
         /** What the case renders: colour, distance or both. */
         String outputs() {
             return colour && distance ? "both" : colour ? "colour" : "distance";
+        }
+    }
+
+    /**
+     * A camera case's photo: size, lens and pose (the viewpoint is the case's).
+     *
+     * @param focal35mm 35 mm-equivalent focal length, millimetres
+     */
+    record Camera(int widthPx, int heightPx, double focal35mm, double headingDeg, double pitchDeg) {
+        dempano.camera.CameraIntrinsics intrinsics() {
+            return dempano.camera.CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35mm);
+        }
+
+        /** Pixels per degree at the image centre (the lens's focal length in pixels, per radian, in degrees). */
+        double pixelsPerDegree() {
+            return intrinsics().fxPx() * Math.PI / 180;
         }
     }
 
@@ -105,6 +130,13 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
             cases.add(new Case("provence-100km", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0.5, true, true, "opengl", "6g", true));
             cases.add(new Case("provence-100km-reference", sceneP, real.toString(), 43.8167, 6.9667, 100, 20, 0, true, true,
                     "reference", "6g", false));
+            // A 24 MP photo's own view (50 mm equivalent) and its 1/4 scale, on the same real tiles.
+            for (int scale : new int[] {1, 4}) {
+                Camera cam = new Camera(6000 / scale, 4000 / scale, 50, 40, -2);
+                cases.add(new Case("camera-" + cam.widthPx() + "x" + cam.heightPx(), "Provence camera, " + cam.widthPx() + "×"
+                        + cam.heightPx() + " px, 50 mm equiv., heading 40°, pitch −2°, 100 km", real.toString(), 43.8167, 6.9667,
+                        100, Math.round(cam.pixelsPerDegree()), 0.5, true, true, "opengl", "6g", false, cam));
+            }
         } else {
             System.err.println("bench: " + real + " lacks N43E006/N43E007: the real-tile scene is skipped");
         }
@@ -170,6 +202,9 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
     }
 
     private static Result measure(Case c) throws IOException {
+        if (c.camera() != null) {
+            return measureCamera(c);
+        }
         long t0 = System.nanoTime();
         DemDirectory dem = new DemDirectory(Path.of(c.dem()), 64);
         boolean reference = c.renderer().equals("reference");
@@ -227,6 +262,55 @@ public final class Benchmark implements java.util.concurrent.Callable<Integer> {
             return new Result(c.name(), coldMillis, coldStages, warm[median], stages.get(median), writeMillis, peak,
                     last.metadata().terrainTriangles(), last.metadata().tilesUsed().size(), refMillis, med, p99, sky, over5,
                     r.glRenderer(), null);
+        }
+    }
+
+    /**
+     * A camera case: cold render (with opening the renderer) and write of the photo's outputs, then the median of
+     * warm renders of the same camera at the panorama cases' warm viewpoints (2, 4 and 6 km away).
+     */
+    private static Result measureCamera(Case c) throws IOException {
+        long t0 = System.nanoTime();
+        DemDirectory dem = new DemDirectory(Path.of(c.dem()), 64);
+        Camera cam = c.camera();
+        dempano.camera.CameraOrientation o = new dempano.camera.CameraOrientation(cam.headingDeg(), cam.pitchDeg(), 0);
+        CameraRequest[] at = new CameraRequest[4];
+        for (int i = 0; i < at.length; i++) {
+            double lat = c.lat() + 0.0127 * i, lon = c.lon() + 0.0185 * i;
+            at[i] = new CameraRequest(cam.intrinsics(), new dempano.camera.CameraPose(lat, lon, 0, Double.NaN, 2, o),
+                    PanoramaRequest.at(lat, lon).withRangeMetres(c.rangeKm() * 1000).withLodErrorPx(c.lodPx())
+                            .withColour(c.colour()).withDistance(c.distance()));
+        }
+        try (PanoramaRenderer r = c.renderer().equals("reference") ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+            double openMillis = (System.nanoTime() - t0) / 1e6;
+            CameraImage cold = r.render(at[0]);
+            double coldMillis = (System.nanoTime() - t0) / 1e6;
+            Map<String, Double> coldStages = new LinkedHashMap<>();
+            coldStages.put("context", openMillis);
+            coldStages.putAll(cold.metadata().timingsMillis());
+            Path tmp = Files.createTempDirectory("dempano-bench");
+            long w0 = System.nanoTime();
+            List<Path> written = CameraWriter.write(cold, tmp.resolve("p").toString(), CameraWriter.Extras.NONE);
+            double writeMillis = (System.nanoTime() - w0) / 1e6;
+            for (Path f : written) {
+                Files.deleteIfExists(f);
+            }
+            Files.deleteIfExists(tmp);
+            cold = null;
+            double[] warm = new double[at.length - 1];
+            CameraImage last = null;
+            List<Map<String, Double>> stages = new ArrayList<>();
+            for (int i = 0; i < warm.length; i++) {
+                last = null;
+                long s = System.nanoTime();
+                last = r.render(at[i + 1]);
+                warm[i] = (System.nanoTime() - s) / 1e6;
+                stages.add(last.metadata().timingsMillis());
+            }
+            int median = argMedian(warm);
+            return new Result(c.name(), coldMillis, coldStages, warm[median], stages.get(median), writeMillis, peakRss(),
+                    last.metadata().terrainTriangles(), last.metadata().tilesUsed().size(), Double.NaN, Double.NaN, Double.NaN,
+                    Double.NaN, Double.NaN, r.glRenderer(), null);
         }
     }
 

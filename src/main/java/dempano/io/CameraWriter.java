@@ -74,7 +74,9 @@ public final class CameraWriter {
      * @return the files' final paths, {@code P.json} last
      */
     public static List<Path> stage(OutputSet set, CameraImage image, Extras extras) throws IOException {
-        set.checkTargets(suffixes(extras.summits() != null));
+        List<String> targets = suffixes(extras.summits() != null);
+        image.layers().forEach(l -> targets.add("-" + l.fileName() + ".npy"));
+        set.checkTargets(targets);
         List<Path> files = new ArrayList<>();
         if (image.hasColour()) {
             BufferedImage rendered = image.image();
@@ -85,6 +87,10 @@ public final class CameraWriter {
                     image.widthPx())));
             BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
             files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
+        }
+        for (dempano.panorama.Layer l : image.layers()) {
+            files.add(set.write("-" + l.fileName() + ".npy", FloatArrayWriter.npy(image.layerBuffer(l), image.heightPx(),
+                    image.widthPx())));
         }
         if (extras.summits() != null) {
             String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());

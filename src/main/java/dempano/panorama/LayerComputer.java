@@ -43,6 +43,52 @@ public final class LayerComputer {
      */
     public static Map<Layer, float[]> compute(Set<Layer> wanted, PanoramaGeometry g, float[] distance, LocalFrame eye,
                                               Refraction refraction, Mosaic mosaic) {
+        return compute(wanted, new Grid(g.widthPx(), g.heightPx(), (col, row, d, out) -> {
+            double el = Math.toRadians(g.elevationOfRow(row)), az = Math.toRadians(g.azimuthOfColumn(col));
+            out[0] = d * Math.cos(el) * Math.sin(az);
+            out[1] = d * Math.cos(el) * Math.cos(az);
+            out[2] = d * Math.sin(el);
+        }), distance, new Surroundings(eye, refraction, mosaic));
+    }
+
+    /**
+     * The layers of any target image (a camera's photo grid), each pixel's point seen at its distance along the
+     * target's own ray ({@link dempano.camera.TargetImage#rayOf}); a pixel without a ray gets NaN in every layer.
+     *
+     * @param distance metres per pixel, +∞ for sky, NaN without a ray (row-major, as {@code target})
+     * @param around   the eye's frame, the refraction the distances were rendered with, and the DEM (needed only for
+     *                 {@link Layer#INCIDENCE} and {@link Layer#UNCERTAINTY})
+     */
+    public static Map<Layer, float[]> compute(Set<Layer> wanted, dempano.camera.TargetImage target, float[] distance,
+                                              Surroundings around) {
+        return compute(wanted, new Grid(target.widthPx(), target.heightPx(), (col, row, d, out) -> {
+            target.rayOf(col, row, out);
+            out[0] *= d;
+            out[1] *= d;
+            out[2] *= d;
+        }), distance, around);
+    }
+
+    /**
+     * The eye's frame, the refraction the distances were rendered with, and the DEM they were rendered from.
+     *
+     * @param mosaic null where neither incidence nor uncertainty is wanted
+     */
+    public record Surroundings(LocalFrame eye, Refraction refraction, Mosaic mosaic) {
+    }
+
+    /** Where a pixel's point seen lies: metres east, north, up from the eye at distance d along its ray. */
+    private interface PointOf {
+        void point(int col, int row, double d, double[] enuOut);
+    }
+
+    private record Grid(int widthPx, int heightPx, PointOf points) {
+    }
+
+    private static Map<Layer, float[]> compute(Set<Layer> wanted, Grid g, float[] distance, Surroundings around) {
+        LocalFrame eye = around.eye();
+        Refraction refraction = around.refraction();
+        Mosaic mosaic = around.mosaic();
         Map<Layer, float[]> out = new EnumMap<>(Layer.class);
         if (wanted.isEmpty()) {
             return out;
@@ -63,8 +109,7 @@ public final class LayerComputer {
         Ellipsoid.toEcef(eye.originLatDeg(), eye.originLonDeg(), 0, eyeFoot);
         eye.enuToEcef(0, 0, 0, eyeEcef);
         IntStream.range(0, g.heightPx()).parallel().forEach(row -> {
-            double el = Math.toRadians(g.elevationOfRow(row));
-            double[] foot = new double[3], hit = new double[3], ray = new double[3];
+            double[] foot = new double[3], hit = new double[3], ray = new double[3], point = new double[3];
             for (int col = 0; col < w; col++) {
                 int i = row * w + col;
                 double d = distance[i];
@@ -76,8 +121,16 @@ public final class LayerComputer {
                     }
                     continue;
                 }
-                double az = Math.toRadians(g.azimuthOfColumn(col));
-                double e = d * Math.cos(el) * Math.sin(az), nn = d * Math.cos(el) * Math.cos(az), u = d * Math.sin(el);
+                g.points().point(col, row, d, point);
+                double e = point[0], nn = point[1], u = point[2];
+                if (Double.isNaN(e)) { // no ray
+                    for (float[] a : all) {
+                        if (a != null) {
+                            a[i] = Float.NaN;
+                        }
+                    }
+                    continue;
+                }
                 double[] geo = eye.toGeodetic(e, nn, u);
                 if (lat != null) {
                     lat[i] = (float) geo[0];

@@ -94,6 +94,108 @@ public record NearTerrain(double nearMetres, double blockedColumnShare, double b
                 above == 0 ? 0 : nearPixels / (double) above, nearest, highestEl, highestUp, from, to);
     }
 
+    /** Width of the azimuth bins a camera's view is measured in, degrees (a panorama's columns are its own). */
+    static final double CAMERA_AZIMUTH_BIN_DEG = 0.1;
+
+    /**
+     * Measures a camera's (or any target image's) distance map: each pixel's own ray gives its azimuth and elevation;
+     * the azimuths are binned ({@link #CAMERA_AZIMUTH_BIN_DEG}) and {@code blockedColumnShare} is the share of the
+     * bins the view covers at or above the horizontal in which near terrain rises {@link #WALL_ELEVATION_DEG} or
+     * more. {@code blockedPixelShare} counts the view's pixels at or above the horizontal.
+     *
+     * @param distance metres per pixel, row-major, +∞ sky, NaN without a ray
+     */
+    public static NearTerrain measure(dempano.camera.TargetImage target, float[] distance, double nearMetres) {
+        int w = target.widthPx(), h = target.heightPx(), bins = (int) Math.round(360 / CAMERA_AZIMUTH_BIN_DEG);
+        boolean[] covered = new boolean[bins], blocked = new boolean[bins];
+        long above = 0, nearPixels = 0;
+        double nearest = Double.POSITIVE_INFINITY, highestEl = Double.NaN, highestUp = Double.NaN;
+        double[] ray = new double[3];
+        for (int r = 0; r < h; r++) {
+            for (int c = 0; c < w; c++) {
+                target.rayOf(c, r, ray);
+                if (Double.isNaN(ray[0]) || ray[2] < 0) {
+                    continue;
+                }
+                double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
+                double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
+                int bin = Math.floorMod((int) Math.floor(az / CAMERA_AZIMUTH_BIN_DEG), bins);
+                covered[bin] = true;
+                above++;
+                float d = distance[r * w + c];
+                if (!Float.isFinite(d)) {
+                    continue;
+                }
+                nearest = Math.min(nearest, d);
+                if (d < nearMetres) {
+                    nearPixels++;
+                    blocked[bin] |= el >= WALL_ELEVATION_DEG;
+                    if (!(el <= highestEl)) {
+                        highestEl = el;
+                        highestUp = d * Math.sin(Math.toRadians(el));
+                    }
+                }
+            }
+        }
+        // The covered bins in azimuth order, starting after the widest gap between them (a camera's view does not
+        // wrap unless it covers north); between columns' rays lie uncovered bins, which neither end nor make a run.
+        int[] order = new int[bins];
+        int coveredBins = 0, blockedBins = 0;
+        for (int b = 0; b < bins; b++) {
+            if (covered[b]) {
+                order[coveredBins++] = b;
+                blockedBins += blocked[b] ? 1 : 0;
+            }
+        }
+        int first = 0, widestGap = -1;
+        for (int k = 0; k < coveredBins; k++) {
+            int gap = Math.floorMod(order[(k + 1) % coveredBins] - order[k], bins);
+            if (gap > widestGap) {
+                widestGap = gap;
+                first = (k + 1) % coveredBins;
+            }
+        }
+        int bestStart = -1, bestEnd = -1, runStart = -1, bestLength = 0;
+        for (int k = 0; k < coveredBins; k++) {
+            int b = order[(first + k) % coveredBins];
+            if (!blocked[b]) {
+                runStart = -1;
+                continue;
+            }
+            if (runStart < 0) {
+                runStart = b;
+            }
+            int length = Math.floorMod(b - runStart, bins) + 1;
+            if (length > bestLength) {
+                bestLength = length;
+                bestStart = runStart;
+                bestEnd = b;
+            }
+        }
+        double from = bestStart < 0 ? Double.NaN : bestStart * CAMERA_AZIMUTH_BIN_DEG;
+        double to = bestStart < 0 ? Double.NaN : ((bestEnd + 1) * CAMERA_AZIMUTH_BIN_DEG) % 360;
+        return new NearTerrain(nearMetres, coveredBins == 0 ? 0 : blockedBins / (double) coveredBins,
+                above == 0 ? 0 : nearPixels / (double) above, nearest, highestEl, highestUp, from, to);
+    }
+
+    /**
+     * The warning for a camera (its azimuths, not all 360°; the panorama's viewpoint options do not apply to a
+     * camera's pose), when near terrain blocks at least {@link #WARN_BLOCKED_COLUMN_SHARE} of them; empty otherwise.
+     */
+    public Optional<String> cameraWarning() {
+        if (!(blockedColumnShare >= WARN_BLOCKED_COLUMN_SHARE)) {
+            return Optional.empty();
+        }
+        return Optional.of(String.format(Locale.ROOT,
+                "terrain nearer than %.0f m rises %.0f° or more above the horizontal in %.0f %% of the camera's azimuths"
+                        + " (longest run %.1f°–%.1f°) and fills %.1f %% of its view above the horizontal: the nearest is %.1f m"
+                        + " from the eye, rising to %+.1f° (%.1f m above the eye). The camera probably stands beside the"
+                        + " DEM's own summit or ridge (a surveyed position the 90 m grid rounds off): raise it"
+                        + " (--offset-m, --altitude-m) or move it onto the DEM's summit",
+                nearMetres, WALL_ELEVATION_DEG, 100 * blockedColumnShare, spanFromAzimuthDeg, spanToAzimuthDeg,
+                100 * blockedPixelShare, nearestMetres, highestElevationDeg, highestAboveEyeMetres));
+    }
+
     /**
      * The warning for the user when near terrain blocks at least {@link #WARN_BLOCKED_COLUMN_SHARE}
      * of the azimuths, with the figures and the options that move the eye; empty otherwise.
