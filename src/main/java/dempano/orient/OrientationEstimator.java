@@ -38,9 +38,11 @@ public final class OrientationEstimator {
     public static final double UNSURE_MARGIN = 0.12;
     /**
      * The margin must also be at least this share of the best score: a poor best fit (high score) needs a larger
-     * margin. Set on seed 1 (30 photos × 5 steps: no estimate more than 5° off had a margin above 0.17 × its
-     * score) with room for the seed-2 failure of the margin-only rule (21.6° off, margin 0.130, score 0.58, which
-     * 0.3 × 0.58 = 0.174 flags); validated on seeds 2 and 3 (see docs/orientation.md).
+     * margin. Set on seed 1 with the earlier skyline extractor (30 photos × 5 steps: no estimate more than 5° off
+     * had a margin above 0.17 × its score) with room for the seed-2 failure of the margin-only rule (21.6° off,
+     * margin 0.130, score 0.58, which 0.3 × 0.58 = 0.174 flags). With the haze-robust extractor, seeds 1 and 2
+     * (30 photos × 5 steps each) had no estimate more than 5° off that the margin-only rule let through, and none
+     * that this rule lets through; the score term flags 3 and 4 more estimates (occluders, clouds).
      */
     public static final double UNSURE_MARGIN_PER_SCORE = 0.3;
     /** Below this share of fitting samples the estimate is flagged unsure. */
