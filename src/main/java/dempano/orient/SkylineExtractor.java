@@ -36,6 +36,10 @@ public final class SkylineExtractor {
     static final double ABOVE_COST = 0.05;
     /** Columns whose score at the path is below this share of the strong edges have no skyline. */
     static final double MIN_WEIGHT = 0.08;
+    /** Edges stronger than this many times the derivative's noise count as fully strong. */
+    static final double NOISE_FACTOR = 8;
+    /** ... and edges stronger than this share of the 99th percentile. */
+    static final double STRONG_SHARE = 0.06;
 
     private SkylineExtractor() {
     }
@@ -65,20 +69,49 @@ public final class SkylineExtractor {
                 score[y * w + x] = y == 0 || y == h - 1 ? 0 : Math.max(0, -dy.data[i]);
             }
         }
-        float scale = percentile(score, 0.99);
-        if (!(scale > 0)) {
+        float strong = percentile(score, 0.99);
+        if (!(strong > 0)) {
             double[] none = new double[w];
             java.util.Arrays.fill(none, Double.NaN);
             return new Skyline(w, h, none, new double[w]);
         }
+        float scale = saturation(dy, strong);
+        float[] raw = new float[w * h];
         for (int i = 0; i < score.length; i++) {
-            score[i] = Math.min(1.5f, score[i] / scale);
+            raw[i] = score[i] / strong;
+            score[i] = Math.min(1f, score[i] / scale);
         }
-        return path(score, w, h);
+        return path(score, raw, w, h);
+    }
+
+    /**
+     * The edge strength at which the path's score saturates: {@link #NOISE_FACTOR} × the noise of the vertical
+     * derivative (1.4826 × its median absolute value, a robust σ), but at least {@link #STRONG_SHARE} of the
+     * strong edges ({@code strong}, the 99th percentile). Saturating puts a faint far ridge in haze on a par
+     * with the contrasty near ridge below it, so the path takes the topmost edge with smooth sky above.
+     */
+    static float saturation(GrayF32 dy, float strong) {
+        int w = dy.width, h = dy.height;
+        float[] abs = new float[w * h];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                abs[y * w + x] = Math.abs(dy.data[dy.startIndex + y * dy.stride + x]);
+            }
+        }
+        float noise = 1.4826f * percentile(abs, 0.5);
+        return Math.max((float) NOISE_FACTOR * noise, (float) STRONG_SHARE * strong);
     }
 
     /** The dynamic-programming path through a score map (row-major, scores ≥ 0 scaled to about 1). */
     static Skyline path(float[] score, int w, int h) {
+        return path(score, score, w, h);
+    }
+
+    /**
+     * The path through {@code score} (saturated, about 0–1), sub-pixel rows from the parabola through {@code raw}
+     * (the unsaturated edge strength, whose peak is not flattened).
+     */
+    static Skyline path(float[] score, float[] raw, int w, int h) {
         int step = Math.max(3, (int) Math.round(MAX_STEP_SHARE * h));
         // Gain of choosing row y in column x: score − ABOVE_COST·(sum of scores above).
         float[] gain = new float[w * h];
@@ -125,11 +158,19 @@ public final class SkylineExtractor {
         double[] rows = new double[w], weight = new double[w];
         for (int x = w - 1; x >= 0; x--) {
             double sc = score[y * w + x];
-            if (sc >= MIN_WEIGHT && y > 0 && y < h - 1) {
-                double a = score[(y - 1) * w + x], c = score[(y + 1) * w + x];
-                double denom = a - 2 * sc + c;
+            // The saturated score is flat across the edge: climb to the peak of the raw strength.
+            int yp = y;
+            while (yp > 1 && raw[(yp - 1) * w + x] > raw[yp * w + x]) {
+                yp--;
+            }
+            while (yp < h - 2 && raw[(yp + 1) * w + x] > raw[yp * w + x]) {
+                yp++;
+            }
+            if (sc >= MIN_WEIGHT && yp > 0 && yp < h - 1) {
+                double a = raw[(yp - 1) * w + x], b0 = raw[yp * w + x], c = raw[(yp + 1) * w + x];
+                double denom = a - 2 * b0 + c;
                 double off = denom < 0 ? 0.5 * (a - c) / denom : 0;
-                rows[x] = y + Math.max(-0.5, Math.min(0.5, off));
+                rows[x] = yp + Math.max(-0.5, Math.min(0.5, off));
                 weight[x] = Math.min(1, sc);
             } else {
                 rows[x] = Double.NaN;

@@ -70,4 +70,36 @@ class SkylineExtractorTest {
         Skyline s = SkylineExtractor.extract(flat);
         assertTrue(s.foundColumns() == 0, "columns found in a flat image: " + s.foundColumns());
     }
+
+    /**
+     * Haze: a far ridge only 14 grey levels darker than the sky near it, above a contrasty near ridge 30–50 rows
+     * lower, with noise σ 3. The skyline is the far ridge (the topmost edge with smooth sky above), not the
+     * strongest edge.
+     */
+    @Test
+    void findsAFaintFarRidgeAboveAStrongNearOne() {
+        Random rnd = new Random(3);
+        BufferedImage img = new BufferedImage(W, H, BufferedImage.TYPE_INT_RGB);
+        for (int x = 0; x < W; x++) {
+            double far = curve(x), near = far + 40 + 10 * Math.sin(x / 23.0);
+            for (int y = 0; y < H; y++) {
+                double farLand = Math.max(0, Math.min(1, y + 0.5 - far));
+                double nearLand = Math.max(0, Math.min(1, y + 0.5 - near));
+                double t = y / (double) H;
+                double[] sky = {200 - 60 * (1 - t), 212 - 50 * (1 - t), 230};
+                double[] haze = {192, 200, 212};
+                double[] ground = {90, 100, 70};
+                int rgb = 0;
+                for (int k = 0; k < 3; k++) {
+                    double land = haze[k] * (1 - nearLand) + ground[k] * nearLand;
+                    double v = sky[k] * (1 - farLand) + land * farLand + 3 * rnd.nextGaussian();
+                    rgb = (rgb << 8) | (int) Math.max(0, Math.min(255, Math.round(v)));
+                }
+                img.setRGB(x, y, rgb);
+            }
+        }
+        Skyline s = SkylineExtractor.extract(img);
+        double share = shareWithin(s, 1.0);
+        assertTrue(share > 0.9, "share of columns on the far ridge within 1 px: " + share);
+    }
 }
