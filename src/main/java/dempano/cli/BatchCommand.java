@@ -94,7 +94,7 @@ public final class BatchCommand implements Callable<Integer> {
             one.warnings().forEach(w -> err.println("  warning: " + w));
             sources.add(one);
         }
-        DemSource dem = PriorityDem.of(sources, fill);
+        DemSource dem = PriorityDem.of(sources, fill, panorama.demBlend());
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {

@@ -175,7 +175,7 @@ public final class Main implements Callable<Integer> {
             one.warnings().forEach(w -> System.err.println("  warning: " + w));
             demSources.add(one);
         }
-        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources, fill);
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources, fill, panorama.demBlend());
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;

@@ -64,6 +64,9 @@ public class PanoramaOptions implements Serializable {
     @Option(names = "--void-fill", paramLabel = "thin-plate|laplace|idw", defaultValue = "thin-plate",
             description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the previous default). Compared on surveyed summits in docs/void-fill.md.")
     public String voidFill = "thin-plate";
+    @Option(names = "--dem-blend", paramLabel = "as-is|delta-surface", defaultValue = "as-is",
+            description = "How a later --dem-dir fills the voids of an earlier one: as-is (default: its heights, bilinear where its grid differs) or delta-surface (its heights plus the difference between the two at the void's rim, interpolated over the void, so a coarser or offset source meets the first without a step). Measured in docs/coarse-fill.md.")
+    public String demBlend = "as-is";
 
     /**
      * The request these options make of {@code base} (its viewpoint and whatever these options do not
@@ -116,10 +119,16 @@ public class PanoramaOptions implements Serializable {
         return VoidFill.parse(voidFill);
     }
 
+    /** The value of {@code --dem-blend}. */
+    public dempano.dem.PriorityDem.Blend demBlend() {
+        return dempano.dem.PriorityDem.Blend.parse(demBlend);
+    }
+
     /** Checks every option (a bad one is a bad argument before anything is read or rendered). */
     public void check() {
         applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
         referenceRenderer();
         voidFillMethod();
+        demBlend();
     }
 }

@@ -49,6 +49,25 @@ public final class PriorityDem implements DemSource {
 
         /** The blend used unless another is asked for. */
         public static final Blend DEFAULT = AS_IS;
+
+        /** The name on the command line: {@code as-is}, {@code delta-surface}. */
+        public String cliName() {
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
+        }
+
+        /**
+         * The blend named on the command line (case-insensitive, '-' or '_').
+         *
+         * @throws IllegalArgumentException naming the accepted names
+         */
+        public static Blend parse(String name) {
+            for (Blend b : values()) {
+                if (b.cliName().equalsIgnoreCase(name.trim().replace('_', '-'))) {
+                    return b;
+                }
+            }
+            throw new IllegalArgumentException("unknown DEM blend '" + name + "' (expected as-is or delta-surface)");
+        }
     }
 
     private record Merge(List<HgtTile> inputs, HgtTile merged) {
@@ -99,7 +118,12 @@ public final class PriorityDem implements DemSource {
 
     /** One source if there is only one, else a {@link PriorityDem} of them filling with {@code voidFill}. */
     public static DemSource of(List<? extends DemSource> sources, VoidFill voidFill) {
-        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources, voidFill);
+        return of(sources, voidFill, Blend.DEFAULT);
+    }
+
+    /** One source if there is only one, else a {@link PriorityDem} of them filling with {@code voidFill} and {@code blend}. */
+    public static DemSource of(List<? extends DemSource> sources, VoidFill voidFill, Blend blend) {
+        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources, voidFill, blend);
     }
 
     public List<DemSource> sources() {
