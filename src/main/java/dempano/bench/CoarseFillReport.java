@@ -83,7 +83,7 @@ public final class CoarseFillReport {
                         && s.lonDeg() >= id.lonWestDeg() && s.lonDeg() < id.lonWestDeg() + 1).toList();
         List<Method> methods = List.of(new Method("thin-plate, no second source (today's default)", null),
                 new Method("30″ source as is (bilinear)", PriorityDem.Blend.AS_IS),
-                new Method("30″ source + delta surface", PriorityDem.Blend.DELTA_SURFACE));
+                new Method("30″ source + delta surface (`--dem-blend delta-surface`)", PriorityDem.Blend.DELTA_SURFACE));
         List<List<Double>> summitErr = new ArrayList<>(), sampleErr = new ArrayList<>();
         for (int k = 0; k < methods.size(); k++) {
             summitErr.add(new ArrayList<>());
@@ -152,7 +152,11 @@ public final class CoarseFillReport {
                 + "is made from the very heights it must restore; a real coarse DEM (e.g. GMTED2010) has its own errors and offsets, "
                 + "which the delta surface removes at each void's rim but not inside it. What this cannot show: how any fill does on "
                 + "SRTM's real voids, which lie on the steepest, highest terrain (radar shadow), where a 30″ average flattens summits "
-                + "most.\n\n");
+                + "most.\n\n"
+                + "Fills: thin-plate alone (B unused); B's heights as they are (`--dem-blend as-is`, bilinear from its 30″ grid); "
+                + "B's heights plus the difference A − B on the samples around the void, interpolated over the void by the "
+                + "thin-plate fill (`--dem-blend delta-surface`). Errors in metres: fill minus held-out SRTM3 sample; bilinear "
+                + "height at the summit's surveyed position minus its surveyed height.\n\n");
         md.append("| fill | held-out samples: mean | RMS | summits | median | mean | mean abs | RMS | worst | within ±50 m |\n");
         md.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (int k = 0; k < methods.size(); k++) {

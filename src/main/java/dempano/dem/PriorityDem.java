@@ -23,9 +23,9 @@ import java.util.Optional;
  *
  * <p>With {@link Blend#DELTA_SURFACE} a later source's heights are not pasted in as they are: where it is
  * coarser or offset, that would leave a step at the void's rim. Instead the difference primary − source is
- * taken on every sample where both have data, interpolated into the voids by the harmonic (Laplace) fill,
- * and added to the source's heights there: the "delta surface fill" of Grohman, Kroenung and Strebeck
- * (2006), with which NGA filled SRTM's voids. At the rim the fill then meets the primary exactly; inside,
+ * taken on every sample where both have data, interpolated into the voids by the void fill (thin-plate by
+ * default; Grohman, Kroenung and Strebeck's "delta surface fill" (2006), with which NGA filled SRTM's voids,
+ * used a smooth interpolation of the same kind), and added to the source's heights there. At the rim the fill then meets the primary exactly; inside,
  * it has the source's shape. Where the source agrees with the primary on the rim, it is used unchanged.
  *
  * <p>Merged tiles are cached, keyed by the identity of the sources' tiles: as long as every source
@@ -44,7 +44,7 @@ public final class PriorityDem implements DemSource {
     public enum Blend {
         /** The source's heights as they are (bilinear where its grid differs). */
         AS_IS,
-        /** The source's heights plus the primary − source difference on the rim, interpolated (Laplace) over the void. */
+        /** The source's heights plus the primary − source difference on the rim, interpolated over the void by the void fill. */
         DELTA_SURFACE;
 
         /** The blend used unless another is asked for. */
@@ -217,7 +217,7 @@ public final class PriorityDem implements DemSource {
                 }
             }
             if (filled > 0 && blend == Blend.DELTA_SURFACE) {
-                addDeltaSurface(h, n, open, now, f);
+                addDeltaSurface(h, n, open, now, f, voidFill);
             }
             open.andNot(now);
             if (filled > 0) {
@@ -234,10 +234,10 @@ public final class PriorityDem implements DemSource {
 
     /**
      * Adds to the samples {@code now} just filled from {@code f} the difference (heights − f) known on the
-     * other samples with data (not {@code open}) where f has data, interpolated harmonically (Laplace) over
-     * the rest of the tile.
+     * other samples with data (not {@code open}) where f has data, interpolated over the rest of the tile
+     * by {@code voidFill} (the fill of the remaining voids; thin-plate by default).
      */
-    private static void addDeltaSurface(float[] h, int n, BitSet open, BitSet now, HgtTile f) {
+    private static void addDeltaSurface(float[] h, int n, BitSet open, BitSet now, HgtTile f, VoidFill voidFill) {
         float[] delta = new float[n * n];
         for (int i = 0; i < n * n; i++) {
             if (open.get(i)) {
@@ -247,7 +247,7 @@ public final class PriorityDem implements DemSource {
                 delta[i] = Float.isNaN(v) ? Float.NaN : h[i] - v;
             }
         }
-        VoidFiller.fill(delta, n, VoidFill.LAPLACE);
+        VoidFiller.fill(delta, n, voidFill);
         for (int i = now.nextSetBit(0); i >= 0; i = now.nextSetBit(i + 1)) {
             h[i] += delta[i];
         }
