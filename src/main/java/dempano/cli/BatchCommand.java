@@ -77,6 +77,7 @@ public final class BatchCommand implements Callable<Integer> {
         PanoramaRequest defaults = defaults();
         boolean reference = panorama.referenceRenderer();
         dempano.dem.VoidFill fill = panorama.voidFillMethod();
+        dempano.dem.PriorityDem.Blend blend = panorama.demBlend();
         ViewpointCsv.Parsed parsed;
         try {
             parsed = ViewpointCsv.read(viewpoints, defaults);
@@ -94,7 +95,7 @@ public final class BatchCommand implements Callable<Integer> {
             one.warnings().forEach(w -> err.println("  warning: " + w));
             sources.add(one);
         }
-        DemSource dem = PriorityDem.of(sources, fill);
+        DemSource dem = PriorityDem.of(sources, fill, blend);
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {

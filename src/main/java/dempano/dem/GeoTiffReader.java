@@ -26,7 +26,9 @@ import mil.nga.tiff.TiffReader;
  * overviews are ignored); georeferencing by one ModelTiepoint plus ModelPixelScale, or by a
  * ModelTransformation without rotation; PixelIsArea (the default) and PixelIsPoint; the GDAL_NODATA
  * tag (samples equal to it, and NaN, are voids); either byte order. Refused, with a one-line message
- * naming the file: projected CRSs, rotated or control-point georeferencing, several bands, other
+ * naming the file: projected CRSs, a prime meridian other than Greenwich, heights in feet (a
+ * VerticalUnitsGeoKey other than metre, or a vertical CRS named "(ft)"/"(ftUS)" as EPSG names them),
+ * rotated or control-point georeferencing, several bands, complex, 1-bit, 16-bit float or 64-bit integer samples, other
  * compressions (JPEG, ZSTD, LERC, ...), BigTIFF, angular units other than degrees, heights outside
  * −1000…9000 m (corrupt, other units, or a nodata value without the GDAL_NODATA tag), and files that
  * are no (or a truncated) TIFF. The TIFF library (mil.nga tiff) parses the directories and
@@ -47,8 +49,11 @@ public final class GeoTiffReader {
     public static final int MAX_INTERVALS_PER_DEGREE = 3600;
 
     // GeoKey ids (GeoTIFF 1.1 spec).
-    private static final int GT_MODEL_TYPE = 1024, GT_RASTER_TYPE = 1025, GEOGRAPHIC_TYPE = 2048,
-            GEOG_ANGULAR_UNITS = 2054, PROJECTED_CS_TYPE = 3072, VERTICAL_CS_TYPE = 4096, VERTICAL_CITATION = 4097,
+    /** Geographic CRSs read as WGS 84: WGS 84 (2-D, 3-D) and ETRS89 and NAD83, within a metre or two of it. */
+    private static final java.util.Set<Integer> WGS84_LIKE_CRS = java.util.Set.of(4326, 4979, 4258, 4269);
+    private static final int GEOG_GEODETIC_DATUM = 2050, WGS84_DATUM = 6326;
+    private static final int GT_MODEL_TYPE = 1024, GT_RASTER_TYPE = 1025, GT_CITATION = 1026, GEOGRAPHIC_TYPE = 2048,
+            GEOG_PRIME_MERIDIAN = 2051, GEOG_ANGULAR_UNITS = 2054, GEOG_PRIME_MERIDIAN_LONG = 2061, VERTICAL_UNITS = 4099, PROJECTED_CS_TYPE = 3072, VERTICAL_CS_TYPE = 4096, VERTICAL_CITATION = 4097,
             VERTICAL_DATUM = 4098;
     private static final int TAG_GEO_DOUBLE_PARAMS = 34736, TAG_GEO_ASCII_PARAMS = 34737;
     private static final int MODEL_PROJECTED = 1, MODEL_GEOGRAPHIC = 2, RASTER_PIXEL_IS_POINT = 2;
@@ -250,7 +255,27 @@ public final class GeoTiffReader {
             throw new DemException(source + " gives coordinates in angular unit EPSG:" + u + ", not degrees; "
                     + "reproject it with gdalwarp -t_srs EPSG:4326");
         }
+        Object meridian = keys.get(GEOG_PRIME_MERIDIAN), meridianLon = keys.get(GEOG_PRIME_MERIDIAN_LONG);
+        if (meridian instanceof Integer pm && pm != 8901 && pm != USER_DEFINED
+                || meridianLon instanceof Double lon && lon != 0) {
+            throw new DemException(source + " counts longitudes from a prime meridian other than Greenwich ("
+                    + (meridianLon instanceof Double lon ? lon + "° east of it" : "EPSG:" + meridian)
+                    + "); reproject it with gdalwarp -t_srs EPSG:4326");
+        }
+        String heightUnit = heightUnitProblem(keys);
+        if (heightUnit != null) {
+            throw new DemException(source + " gives heights in " + heightUnit + ", not metres; convert them, "
+                    + "e.g. gdal_translate -scale with the factor to metres and -a_srs EPSG:4326");
+        }
         int geographic = keys.get(GEOGRAPHIC_TYPE) instanceof Integer g ? g : USER_DEFINED;
+        Object datum = keys.get(GEOG_GEODETIC_DATUM);
+        if (geographic != USER_DEFINED && !WGS84_LIKE_CRS.contains(geographic)
+                || geographic == USER_DEFINED && datum instanceof Integer d && d != WGS84_DATUM && d != USER_DEFINED) {
+            // Another datum's latitudes and longitudes are off WGS 84's by up to hundreds of metres (ED50: ~100 m).
+            throw new DemException(source + " gives latitude and longitude on the geodetic datum of "
+                    + (geographic != USER_DEFINED ? "EPSG:" + geographic : "datum EPSG:" + datum)
+                    + ", not WGS 84 (positions would be off by up to hundreds of metres); reproject it with gdalwarp -t_srs EPSG:4326");
+        }
         boolean point = keys.get(GT_RASTER_TYPE) instanceof Integer t && t == RASTER_PIXEL_IS_POINT;
 
         int width = dir.getImageWidth().intValue(), height = dir.getImageHeight().intValue();
@@ -267,6 +292,27 @@ public final class GeoTiffReader {
         float[] heights = heights(source, dir, bytes, width, height);
         return new Grid(source, width, height, heights, lon0, lat0, geo[2], geo[3], point,
                 verticalDatum(keys, fileName), geographic);
+    }
+
+    /**
+     * Why the heights are not in metres, or null: a VerticalUnitsGeoKey other than metre (EPSG:9001), or,
+     * as GDAL writes a compound CRS without that key, a vertical CRS whose name says feet (EPSG names of
+     * such CRSs end in "(ft)" or "(ftUS)", e.g. "NAVD88 height (ftUS)", EPSG:6360).
+     */
+    private static String heightUnitProblem(Map<Integer, Object> keys) {
+        if (keys.get(VERTICAL_UNITS) instanceof Integer u && u != 9001 && u != USER_DEFINED) {
+            return "unit EPSG:" + u + " (VerticalUnitsGeoKey)";
+        }
+        for (int key : new int[] {GT_CITATION, VERTICAL_CITATION}) {
+            if (keys.get(key) instanceof String name) {
+                java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\((ft|ftUS|ftIndian|ftCla|ftSe|ftGC|ftBr[^)]*|foot|feet)\\)",
+                        java.util.regex.Pattern.CASE_INSENSITIVE).matcher(name);
+                if (m.find()) {
+                    return "feet (vertical CRS \"" + name.replaceAll(".*\\+\\s*", "").trim() + "\")";
+                }
+            }
+        }
+        return null;
     }
 
     /** The first image that is not a reduced-resolution overview or a mask (NewSubfileType 0). */
@@ -371,7 +417,8 @@ public final class GeoTiffReader {
         boolean floating = format == 3;
         if (!(floating ? bits == 32 || bits == 64 : (format == 1 || format == 2) && (bits == 8 || bits == 16 || bits == 32))) {
             throw new DemException(source + ": unsupported sample type (" + bits + "-bit " + (floating ? "float"
-                    : format == 2 ? "signed integer" : format == 1 ? "unsigned integer" : "format " + format)
+                    : format == 2 ? "signed integer" : format == 1 ? "unsigned integer" : format == 5 ? "complex integer"
+                    : format == 6 ? "complex float" : "sample format " + format)
                     + "; supported: 8/16/32-bit integers, 32/64-bit floats)");
         }
         if (predictor == 3 && !floating) {

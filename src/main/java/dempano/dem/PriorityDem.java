@@ -21,6 +21,13 @@ import java.util.Optional;
  * (sources with different datums are merged as they are: heights differ by the geoid models'
  * difference, typically under 1 m).
  *
+ * <p>With {@link Blend#DELTA_SURFACE} a later source's heights are not pasted in as they are: where it is
+ * coarser or offset, that would leave a step at the void's rim. Instead the difference primary − source is
+ * taken on every sample where both have data, interpolated into the voids by the void fill (thin-plate by
+ * default; Grohman, Kroenung and Strebeck's "delta surface fill" (2006), with which NGA filled SRTM's voids,
+ * used a smooth interpolation of the same kind), and added to the source's heights there. At the rim the fill then meets the primary exactly; inside,
+ * it has the source's shape. Where the source agrees with the primary on the rim, it is used unchanged.
+ *
  * <p>Merged tiles are cached, keyed by the identity of the sources' tiles: as long as every source
  * returns the same (cached) tile object, the merged tile is reused; a source that read its file
  * again (because it changed) yields a new merge. Thread-safe when the sources are.
@@ -31,6 +38,37 @@ public final class PriorityDem implements DemSource {
     private final List<DemSource> sources;
     private final Map<TileId, Merge> cache;
     private final VoidFill voidFill;
+    private final Blend blend;
+
+    /** How a lower-priority source's heights fill the primary's voids. */
+    public enum Blend {
+        /** The source's heights as they are (bilinear where its grid differs). */
+        AS_IS,
+        /** The source's heights plus the primary − source difference on the rim, interpolated over the void by the void fill. */
+        DELTA_SURFACE;
+
+        /** The blend used unless another is asked for. */
+        public static final Blend DEFAULT = AS_IS;
+
+        /** The name on the command line: {@code as-is}, {@code delta-surface}. */
+        public String cliName() {
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
+        }
+
+        /**
+         * The blend named on the command line (case-insensitive, '-' or '_').
+         *
+         * @throws IllegalArgumentException naming the accepted names
+         */
+        public static Blend parse(String name) {
+            for (Blend b : values()) {
+                if (b.cliName().equalsIgnoreCase(name.trim().replace('_', '-'))) {
+                    return b;
+                }
+            }
+            throw new IllegalArgumentException("unknown DEM blend '" + name + "' (expected as-is or delta-surface)");
+        }
+    }
 
     private record Merge(List<HgtTile> inputs, HgtTile merged) {
     }
@@ -49,7 +87,18 @@ public final class PriorityDem implements DemSource {
      * @throws IllegalArgumentException if there is no source
      */
     public PriorityDem(List<? extends DemSource> sources, VoidFill voidFill) {
+        this(sources, voidFill, Blend.DEFAULT);
+    }
+
+    /**
+     * @param sources  in priority order, at least one
+     * @param voidFill how the voids no source fills are interpolated
+     * @param blend    how a later source's heights go into the primary's voids
+     * @throws IllegalArgumentException if there is no source
+     */
+    public PriorityDem(List<? extends DemSource> sources, VoidFill voidFill, Blend blend) {
         this.voidFill = java.util.Objects.requireNonNull(voidFill);
+        this.blend = java.util.Objects.requireNonNull(blend);
         if (sources.isEmpty()) {
             throw new IllegalArgumentException("no DEM source given");
         }
@@ -69,7 +118,12 @@ public final class PriorityDem implements DemSource {
 
     /** One source if there is only one, else a {@link PriorityDem} of them filling with {@code voidFill}. */
     public static DemSource of(List<? extends DemSource> sources, VoidFill voidFill) {
-        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources, voidFill);
+        return of(sources, voidFill, Blend.DEFAULT);
+    }
+
+    /** One source if there is only one, else a {@link PriorityDem} of them filling with {@code voidFill} and {@code blend}. */
+    public static DemSource of(List<? extends DemSource> sources, VoidFill voidFill, Blend blend) {
+        return sources.size() == 1 ? sources.get(0) : new PriorityDem(sources, voidFill, blend);
     }
 
     public List<DemSource> sources() {
@@ -102,7 +156,7 @@ public final class PriorityDem implements DemSource {
                 return Optional.of(m.merged());
             }
         }
-        HgtTile merged = merge(first, found.subList(primary + 1, found.size()), voidFill);
+        HgtTile merged = merge(first, found.subList(primary + 1, found.size()), voidFill, blend);
         synchronized (cache) {
             cache.put(id, new Merge(found, merged));
         }
@@ -125,6 +179,11 @@ public final class PriorityDem implements DemSource {
 
     /** {@link #merge(HgtTile, List)} interpolating the remaining voids with {@code voidFill}. */
     static HgtTile merge(HgtTile primary, List<HgtTile> fillers, VoidFill voidFill) {
+        return merge(primary, fillers, voidFill, Blend.AS_IS);
+    }
+
+    /** {@link #merge(HgtTile, List, VoidFill)} putting the fillers' heights in as {@code blend} says. */
+    static HgtTile merge(HgtTile primary, List<HgtTile> fillers, VoidFill voidFill, Blend blend) {
         int n = primary.samplesPerSide();
         float[] h = new float[n * n];
         BitSet open = new BitSet(n * n);
@@ -148,14 +207,19 @@ public final class PriorityDem implements DemSource {
                 continue;
             }
             long filled = 0;
+            BitSet now = new BitSet(n * n);
             for (int i = open.nextSetBit(0); i >= 0; i = open.nextSetBit(i + 1)) {
                 float v = validSample(f, (double) (i / n) / (n - 1), (double) (i % n) / (n - 1));
                 if (!Float.isNaN(v)) {
                     h[i] = v;
-                    open.clear(i);
+                    now.set(i);
                     filled++;
                 }
             }
+            if (filled > 0 && blend == Blend.DELTA_SURFACE) {
+                addDeltaSurface(h, n, open, now, f, voidFill);
+            }
+            open.andNot(now);
             if (filled > 0) {
                 contributions.add(new DemContribution(f.source(), f.verticalDatum(), filled));
                 source.append(" + ").append(filled).append(" samples from ").append(f.source());
@@ -166,6 +230,27 @@ public final class PriorityDem implements DemSource {
         VoidReport voids = VoidFiller.fill(h, n, voidFill);
         return new HgtTile(primary.id(), source.toString(), n, h, voids, mask, warnings)
                 .withVerticalDatum(primary.verticalDatum()).withContributions(contributions);
+    }
+
+    /**
+     * Adds to the samples {@code now} just filled from {@code f} the difference (heights − f) known on the
+     * other samples with data (not {@code open}) where f has data, interpolated over the rest of the tile
+     * by {@code voidFill} (the fill of the remaining voids; thin-plate by default).
+     */
+    private static void addDeltaSurface(float[] h, int n, BitSet open, BitSet now, HgtTile f, VoidFill voidFill) {
+        float[] delta = new float[n * n];
+        for (int i = 0; i < n * n; i++) {
+            if (open.get(i)) {
+                delta[i] = Float.NaN;
+            } else {
+                float v = validSample(f, (double) (i / n) / (n - 1), (double) (i % n) / (n - 1));
+                delta[i] = Float.isNaN(v) ? Float.NaN : h[i] - v;
+            }
+        }
+        VoidFiller.fill(delta, n, voidFill);
+        for (int i = now.nextSetBit(0); i >= 0; i = now.nextSetBit(i + 1)) {
+            h[i] += delta[i];
+        }
     }
 
     /**

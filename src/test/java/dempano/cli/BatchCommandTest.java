@@ -63,6 +63,8 @@ class BatchCommandTest {
         // A bad value is the same bad argument in both (exit 2), named in the message.
         assertEquals(2, Main.run("--void-fill", "kriging"));
         assertEquals(2, Main.run("batch", "x.csv", "--out-dir", "o", "--dem-dir", "d", "--void-fill", "kriging"));
+        assertEquals(2, Main.run("--dem-blend", "feather"));
+        assertEquals(2, Main.run("batch", "x.csv", "--out-dir", "o", "--dem-dir", "d", "--dem-blend", "feather"));
     }
 
     /**

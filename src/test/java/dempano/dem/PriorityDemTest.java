@@ -170,4 +170,40 @@ class PriorityDemTest {
         DemException e = assertThrows(DemException.class, () -> new DemDirectory(dir).tile(WEST));
         assertTrue(e.getMessage().contains("is ambiguous") && e.getMessage().contains("N46E008.tif"), e.getMessage());
     }
+
+    /**
+     * Delta surface fill: B (a coarser grid, 30″ vs 60″) is another plane than A, so pasted in as it is
+     * it leaves a step at the hole's rim; the difference A − B is then a plane too, which the thin-plate
+     * (and Laplace) interpolation restores exactly in a void away from the tile border, so B plus the
+     * interpolated difference is A's own plane in the hole.
+     * Where B agrees with A, the delta is zero and B's heights go in unchanged.
+     */
+    @Test
+    void theDeltaSurfaceBlendMeetsThePrimaryAtTheRimWithoutAStep() {
+        for (VoidFill fill : List.of(VoidFill.THIN_PLATE, VoidFill.LAPLACE)) {
+            HgtTile a = tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A");
+            HgtTile b = tile(WEST, 60, PriorityDemTest::fb, (r, c) -> false, "B");
+            HgtTile asIs = PriorityDem.merge(a, List.of(b), fill, PriorityDem.Blend.AS_IS);
+            HgtTile blended = PriorityDem.merge(a, List.of(b), fill, PriorityDem.Blend.DELTA_SURFACE);
+            double step = Math.abs(asIs.heightMetres(30, 50) - asIs.heightMetres(29, 50));
+            assertTrue(step > 500, "pasted in as it is, B leaves a step at the rim: " + step + " m");
+            for (int r = 30; r < 50; r++) {
+                for (int c = 40; c < 70; c++) {
+                    double lat = 47 - r / 120.0, lon = 8 + c / 120.0;
+                    assertEquals(fb(lat, lon), asIs.heightMetres(r, c), 2e-3, "as is " + r + ", " + c);
+                    assertEquals(fa(lat, lon), blended.heightMetres(r, c), 0.05, fill + " blended " + r + ", " + c);
+                }
+            }
+            assertEquals(List.of(121L * 121 - 600, 600L), blended.contributions().stream().map(DemContribution::samples).toList());
+            assertEquals(0, blended.voids().voidCells());
+
+            HgtTile truth = tile(WEST, 120, PriorityDemTest::fa, (r, c) -> false, "truth");
+            HgtTile restored = PriorityDem.merge(a, List.of(truth), fill, PriorityDem.Blend.DELTA_SURFACE);
+            for (int r = 0; r < 121; r++) {
+                for (int c = 0; c < 121; c++) {
+                    assertEquals(truth.heightMetres(r, c), restored.heightMetres(r, c), fill + " restored exactly at " + r + ", " + c);
+                }
+            }
+        }
+    }
 }
