@@ -65,6 +65,23 @@ public final class ViewpointCsv {
     /** The columns read, required first. */
     public static final List<String> COLUMNS = List.of(ID, LAT, LON, ALTITUDE_M, OFFSET_M, EYE_HEIGHT_M, RANGE_KM, PPD,
             IMAGE, HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM);
+
+    /** A photo row's optional column: what it is called in messages, and the override it makes. */
+    private record PhotoColumn(String column, String what,
+                               java.util.function.BiFunction<PhotoOverrides, Double, PhotoOverrides> override) {
+    }
+
+    /** The columns a photo row may override its photo's metadata with, in the order they are applied. */
+    private static final List<PhotoColumn> PHOTO_OVERRIDES = List.of(
+            new PhotoColumn(ALTITUDE_M, "altitude", PhotoOverrides::withAltitudeMetres),
+            new PhotoColumn(OFFSET_M, "offset", PhotoOverrides::withOffsetMetres),
+            new PhotoColumn(EYE_HEIGHT_M, "eye height", PhotoOverrides::withCameraHeightMetres),
+            new PhotoColumn(HEADING_DEG, "heading", PhotoOverrides::withHeadingDeg),
+            new PhotoColumn(PITCH_DEG, "pitch", PhotoOverrides::withPitchDeg),
+            new PhotoColumn(ROLL_DEG, "roll", PhotoOverrides::withRollDeg),
+            new PhotoColumn(HFOV_DEG, "horizontal field of view", PhotoOverrides::withHorizontalFovDeg),
+            new PhotoColumn(FOCAL35_MM, "35 mm-equivalent focal length", PhotoOverrides::withFocal35mmMm));
+
     private static final List<String> REQUIRED = List.of(ID, LAT, LON);
     /** Plain decimal numbers: no NaN, Infinity, hexadecimal, type suffixes or decimal commas. */
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
@@ -265,30 +282,11 @@ public final class ViewpointCsv {
             r = atViewpoint(defaults, lat, lon); // checks the range
             o = o.withPosition(lat, lon);
         }
-        double v;
-        if (!Double.isNaN(v = number(f, columns, ALTITUDE_M, "altitude", Double.NaN))) {
-            o = o.withAltitudeMetres(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, OFFSET_M, "offset", Double.NaN))) {
-            o = o.withOffsetMetres(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, EYE_HEIGHT_M, "eye height", Double.NaN))) {
-            o = o.withCameraHeightMetres(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, HEADING_DEG, "heading", Double.NaN))) {
-            o = o.withHeadingDeg(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, PITCH_DEG, "pitch", Double.NaN))) {
-            o = o.withPitchDeg(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, ROLL_DEG, "roll", Double.NaN))) {
-            o = o.withRollDeg(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, HFOV_DEG, "horizontal field of view", Double.NaN))) {
-            o = o.withHorizontalFovDeg(v);
-        }
-        if (!Double.isNaN(v = number(f, columns, FOCAL35_MM, "35 mm-equivalent focal length", Double.NaN))) {
-            o = o.withFocal35mmMm(v);
+        for (PhotoColumn c : PHOTO_OVERRIDES) {
+            double v = number(f, columns, c.column(), c.what(), Double.NaN);
+            if (!Double.isNaN(v)) {
+                o = c.override().apply(o, v);
+            }
         }
         return new BatchRow(line, id, withRange(r, f, columns), new BatchPhoto(path, o), null);
     }
