@@ -111,7 +111,7 @@ public final class BatchCommand implements Callable<Integer> {
         javax.imageio.ImageIO.setUseCache(false);
         BatchSummary summary;
         java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
             BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(panorama.pfm, null,
                     dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
             Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");

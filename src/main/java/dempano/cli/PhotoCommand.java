@@ -104,7 +104,7 @@ public final class PhotoCommand implements Callable<Integer> {
         }
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(sources, fill);
         PhotoJob.Result done;
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem)) {
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
             done = PhotoJob.run(r, input, new PhotoJob.Log() {
                 @Override
                 public void progress(String line) {

@@ -63,21 +63,21 @@ final class GlPlatform {
 
     /**
      * jME's own log lines (start-up banner, warnings) are not for users: only SEVERE ones are kept, and
-     * for the window none (its failures reach the caller through {@code handleError}, which words
-     * them). {@code DEMPANO_DEBUG} set in the environment keeps them all.
+     * from its context class ({@code LwjglWindow}, which runs the offscreen buffer too) none: its failures
+     * reach the caller through {@code handleError}, which words them ("Display initialization failed"
+     * printed with a timestamp above our own message was noise). {@code DEMPANO_DEBUG} set in the
+     * environment keeps them all.
      */
-    static synchronized void quietJme(boolean window) {
+    static synchronized void quietJme() {
         if (System.getenv("DEMPANO_DEBUG") != null) {
             return;
         }
         Logger jme = Logger.getLogger("com.jme3");
         jme.setLevel(Level.SEVERE);
         QUIETED.add(jme);
-        if (window) {
-            Logger w = Logger.getLogger(LwjglWindow.class.getName());
-            w.setLevel(Level.OFF);
-            QUIETED.add(w);
-        }
+        Logger w = Logger.getLogger(LwjglWindow.class.getName());
+        w.setLevel(Level.OFF);
+        QUIETED.add(w);
     }
 
     /**

@@ -113,7 +113,7 @@ public final class OffscreenRenderer {
     }
 
     private static OffscreenRenderer open() {
-        GlPlatform.quietJme(false);
+        GlPlatform.quietJme();
         GlPlatform.configure();
         GlApp app = new GlApp();
         AppSettings s = new AppSettings(true);
@@ -404,7 +404,9 @@ public final class OffscreenRenderer {
                 fatal = t != null ? t : new IllegalStateException(errMsg);
             }
             if (!ready.isDone()) {
-                ready.completeExceptionally(new IllegalStateException(errMsg + (t != null ? ": " + t.getMessage() : ""), t));
+                // GLFW's errors come as errMsg and again as t's message: say it once.
+                boolean repeats = t == null || t.getMessage() == null || errMsg.contains(t.getMessage());
+                ready.completeExceptionally(new IllegalStateException(errMsg + (repeats ? "" : ": " + t.getMessage()), t));
             }
             stop(false);
         }

@@ -112,7 +112,7 @@ public final class OnscreenRenderer extends SimpleApplication {
     /** Runs the window until it is closed (or the script ends); returns 0, or throws what went wrong. */
     public static int fly(Options opt) {
         checkDisplay();
-        GlPlatform.quietJme(true);
+        GlPlatform.quietJme();
         GlPlatform.configureWindow();
         OnscreenRenderer app = new OnscreenRenderer(opt);
         AppSettings s = new AppSettings(true);
