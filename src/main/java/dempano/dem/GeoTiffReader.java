@@ -63,23 +63,16 @@ public final class GeoTiffReader {
     }
 
     /**
-     * A GeoTIFF's full-resolution heights and where its pixel centres lie.
+     * Where a geographic grid's pixel centres lie.
      *
-     * @param source          the file, for messages
-     * @param width           columns
-     * @param height          rows
-     * @param heightsMetres   row-major heights, metres; NaN for voids (nodata)
-     * @param lonOfCol0Deg    longitude of the centre of column 0, degrees
-     * @param latOfRow0Deg    latitude of the centre of row 0, degrees
-     * @param colSpacingDeg   longitude step per column, degrees (&gt; 0: column 0 is west)
-     * @param rowSpacingDeg   latitude step per row, degrees (&gt; 0: row 0 is north, the usual case)
-     * @param pixelIsPoint    the raster type the file declared (already applied to the two origins)
-     * @param verticalDatum   see {@link DemContribution#verticalDatum()}
-     * @param geographicEpsg  the geographic CRS's EPSG code (4326 for WGS 84), 32767 if user-defined
+     * @param lonOfCol0Deg  longitude of the centre of column 0, degrees
+     * @param latOfRow0Deg  latitude of the centre of row 0, degrees
+     * @param colSpacingDeg longitude step per column, degrees (&gt; 0: column 0 is west)
+     * @param rowSpacingDeg latitude step per row, degrees (&gt; 0: row 0 is north, the usual case)
+     * @param pixelIsPoint  the raster type the file declared (already applied to the two origins)
      */
-    public record Grid(String source, int width, int height, float[] heightsMetres, double lonOfCol0Deg,
-                       double latOfRow0Deg, double colSpacingDeg, double rowSpacingDeg, boolean pixelIsPoint,
-                       String verticalDatum, int geographicEpsg) {
+    public record PixelCentres(double lonOfCol0Deg, double latOfRow0Deg, double colSpacingDeg, double rowSpacingDeg,
+                               boolean pixelIsPoint) {
         /** Fractional column of a longitude (column centres are integers). */
         public double colOf(double lonDeg) {
             return (lonDeg - lonOfCol0Deg) / colSpacingDeg;
@@ -90,9 +83,43 @@ public final class GeoTiffReader {
             return (latOfRow0Deg - latDeg) / rowSpacingDeg;
         }
 
+        /** Longitude of a (fractional) column, degrees. */
+        public double lonOfCol(double col) {
+            return lonOfCol0Deg + col * colSpacingDeg;
+        }
+
+        /** Latitude of a (fractional) row, degrees. */
+        public double latOfRow(double row) {
+            return latOfRow0Deg - row * rowSpacingDeg;
+        }
+    }
+
+    /**
+     * A GeoTIFF's full-resolution heights and where its pixel centres lie.
+     *
+     * @param source          the file, for messages
+     * @param width           columns
+     * @param height          rows
+     * @param heightsMetres   row-major heights, metres; NaN for voids (nodata)
+     * @param centres         where the pixel centres lie
+     * @param verticalDatum   see {@link DemContribution#verticalDatum()}
+     * @param geographicEpsg  the geographic CRS's EPSG code (4326 for WGS 84), 32767 if user-defined
+     */
+    public record Grid(String source, int width, int height, float[] heightsMetres, PixelCentres centres,
+                       String verticalDatum, int geographicEpsg) {
+        /** Fractional column of a longitude (column centres are integers). */
+        public double colOf(double lonDeg) {
+            return centres.colOf(lonDeg);
+        }
+
+        /** Fractional row of a latitude (row centres are integers). */
+        public double rowOf(double latDeg) {
+            return centres.rowOf(latDeg);
+        }
+
         /** The longitude 360° away from lonDeg that is nearest the grid's centre. */
         double unwrap(double lonDeg) {
-            double centre = lonOfCol0Deg + (width - 1) * colSpacingDeg / 2;
+            double centre = centres.lonOfCol((width - 1) / 2.0);
             return lonDeg + 360 * Math.rint((centre - lonDeg) / 360);
         }
     }
@@ -141,7 +168,7 @@ public final class GeoTiffReader {
             return g;
         }
         int w = g.width() + (east ? 1 : 0), h = g.height() + (south ? 1 : 0);
-        double lonV = g.lonOfCol0Deg() + g.width() * g.colSpacingDeg(), latV = g.latOfRow0Deg() - g.height() * g.rowSpacingDeg();
+        double lonV = g.centres().lonOfCol(g.width()), latV = g.centres().latOfRow(g.height());
         float[] z = new float[w * h];
         for (int r = 0; r < g.height(); r++) {
             System.arraycopy(g.heightsMetres(), r * g.width(), z, r * w, g.width());
@@ -154,12 +181,12 @@ public final class GeoTiffReader {
         }
         if (east) {
             for (int r = 0; r < g.height(); r++) {
-                z[r * w + g.width()] = e != null ? at(e, g.latOfRow0Deg() - r * g.rowSpacingDeg(), lonV) : z[r * w + g.width() - 1];
+                z[r * w + g.width()] = e != null ? at(e, g.centres().latOfRow(r), lonV) : z[r * w + g.width() - 1];
             }
         }
         if (south) {
             for (int c = 0; c < g.width(); c++) {
-                z[g.height() * w + c] = s != null ? at(s, latV, g.lonOfCol0Deg() + c * g.colSpacingDeg()) : z[(g.height() - 1) * w + c];
+                z[g.height() * w + c] = s != null ? at(s, latV, g.centres().lonOfCol(c)) : z[(g.height() - 1) * w + c];
             }
         }
         if (east && south) {
@@ -168,8 +195,7 @@ public final class GeoTiffReader {
             z[w * h - 1] = se != null ? at(se, latV, lonV)
                     : s != null ? z[w * h - 2] : e != null ? z[(h - 1) * w - 1] : z[(h - 2) * w + w - 2];
         }
-        return new Grid(g.source(), w, h, z, g.lonOfCol0Deg(), g.latOfRow0Deg(), g.colSpacingDeg(), g.rowSpacingDeg(),
-                g.pixelIsPoint(), g.verticalDatum(), g.geographicEpsg());
+        return new Grid(g.source(), w, h, z, g.centres(), g.verticalDatum(), g.geographicEpsg());
     }
 
     private static Grid neighbour(java.util.function.Function<TileId, Path> neighbours, TileId id, Part part, Grid of,
@@ -290,7 +316,7 @@ public final class GeoTiffReader {
             height = 1;
         }
         float[] heights = heights(source, dir, bytes, width, height);
-        return new Grid(source, width, height, heights, lon0, lat0, geo[2], geo[3], point,
+        return new Grid(source, width, height, heights, new PixelCentres(lon0, lat0, geo[2], geo[3], point),
                 verticalDatum(keys, fileName), geographic);
     }
 
@@ -618,11 +644,11 @@ public final class GeoTiffReader {
 
     /** {@link #toTile(Grid, TileId, List)} with the given void fill. */
     static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings, VoidFill fill) {
-        int ipd = intervalsPerDegree(Math.min(g.colSpacingDeg(), Math.abs(g.rowSpacingDeg())));
+        int ipd = intervalsPerDegree(Math.min(g.centres().colSpacingDeg(), Math.abs(g.centres().rowSpacingDeg())));
         double centreRow = g.rowOf(id.latSouthDeg() + 0.5), centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5));
         if (!(centreRow >= -1 && centreRow <= g.height() && centreCol >= -1 && centreCol <= g.width())) {
-            double latA = g.latOfRow0Deg(), latB = g.latOfRow0Deg() - (g.height() - 1) * g.rowSpacingDeg();
-            double lonA = g.lonOfCol0Deg(), lonB = g.lonOfCol0Deg() + (g.width() - 1) * g.colSpacingDeg();
+            double latA = g.centres().latOfRow(0), latB = g.centres().latOfRow(g.height() - 1);
+            double lonA = g.centres().lonOfCol(0), lonB = g.centres().lonOfCol(g.width() - 1);
             throw new DemException(String.format(Locale.ROOT, "%s is named for tile %s but its pixels cover latitude "
                     + "%.4f…%.4f°, longitude %.4f…%.4f°", g.source(), id, Math.min(latA, latB), Math.max(latA, latB),
                     lonA, lonB));

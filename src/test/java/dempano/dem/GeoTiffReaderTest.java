@@ -82,7 +82,7 @@ class GeoTiffReaderTest {
         GeoTiffReader.Grid g = GeoTiffReader.readGrid(f);
         assertEquals(121, g.width());
         assertEquals(121, g.height());
-        assertEquals(point, g.pixelIsPoint());
+        assertEquals(point, g.centres().pixelIsPoint());
         for (int r = 0; r < 121; r++) {
             for (int c = 0; c < 121; c++) {
                 assertEquals((float) v.at(r, c), g.heightsMetres()[r * 121 + c], "pixel " + r + ", " + c);
