@@ -43,7 +43,7 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  *
  * <p>Run: {@code gradle accuracyReport} (or {@code java -cp … dempano.cli.AccuracyReport --shared ../shared --out docs});
  * {@code --scenes sea-2m,provence,summits} (Gradle: {@code -Pscenes=…}) runs only the named scenes, "summits" for the
- * summit section.
+ * summit section, "terrain" for the void-fill section.
  */
 public final class AccuracyReport {
     /**
@@ -147,7 +147,7 @@ public final class AccuracyReport {
 
     public static void main(String[] args) throws IOException {
         Path shared = Path.of("../shared"), out = Path.of("docs");
-        java.util.Set<String> only = null; // --scenes a,b: only these scenes ("summits" for the summit section)
+        java.util.Set<String> only = null; // --scenes a,b: only these scenes ("summits", "terrain" for those sections)
         for (int i = 0; i + 1 < args.length; i += 2) {
             switch (args[i]) {
                 case "--shared" -> shared = Path.of(args[i + 1]);
@@ -184,8 +184,8 @@ public final class AccuracyReport {
         Map<Scene, Truth> truths = new LinkedHashMap<>();
         // Held open for the whole report: the shared GL context is then created once (re-creating it
         // after the last holder closed failed once on llvmpipe: see the issue notes).
-        PanoramaRenderer keepAlive = PanoramaRenderer.open(new InMemoryDem("none", List.of()));
-        String glName = keepAlive.glRenderer();
+        PanoramaRenderer keepAlive = scenes.isEmpty() ? null : PanoramaRenderer.open(new InMemoryDem("none", List.of()));
+        String glName = keepAlive == null ? "none (no scene rendered)" : keepAlive.glRenderer();
         for (Scene scene : scenes) {
             PanoramaRequest base = scene.request();
             Truth truth = truth(scene);
@@ -212,14 +212,41 @@ public final class AccuracyReport {
                     new Scene("eggishorn", "Eggishorn, Bernese Alps (N46E008), 80 km", new DemDirectory(dem), 46.4314, 8.0942, 80_000));
             summitSection = summits(summitScenes, list, truths);
         }
+        String terrainSection = only == null || only.contains("terrain") ? terrainSection(dem, alps) : "";
         if (!scenes.isEmpty()) {
             plot(scenes, rows, out.resolve("accuracy.png"));
+            keepAlive.close();
         }
-        keepAlive.close();
         double totalSeconds = (System.nanoTime() - started) / 1e9;
-        Files.writeString(out.resolve("accuracy.md"), markdown(scenes, rows, truths, glName, totalSeconds) + summitSection,
+        Files.writeString(out.resolve("accuracy.md"), markdown(scenes, rows, truths, glName, totalSeconds) + summitSection + terrainSection,
                 StandardCharsets.UTF_8);
         System.err.println("accuracyReport: wrote " + out.resolve("accuracy.md") + " and " + out.resolve("accuracy.png"));
+    }
+
+    /**
+     * The void-fill section ({@link dempano.bench.FillSummary}): the fills measured on the surveyed summits in the real
+     * voids of the tiles in {@code dem} and on held-out voids of N46E008 with a 30″ second source (that part left out,
+     * and said so, where GDAL's gdalwarp is absent). Empty, with a line on stderr, where the tiles or the summits are.
+     */
+    static String terrainSection(Path dem, Path summits) throws IOException {
+        if (!Files.isDirectory(dem) || !Files.isRegularFile(summits)) {
+            System.err.println("accuracyReport: " + dem + " or " + summits + " absent: void-fill section left out");
+            return "";
+        }
+        dempano.bench.VoidFillReport.Measured real = dempano.bench.VoidFillReport.measure(dem, summits);
+        dempano.bench.CoarseFillReport.Measured heldOut = null;
+        Path n46e008 = dem.resolve("N46E008.hgt");
+        if (Files.isRegularFile(n46e008)) {
+            try {
+                heldOut = dempano.bench.CoarseFillReport.measure(n46e008, summits);
+            } catch (IOException e) {
+                System.err.println("accuracyReport: held-out void fills not measured: " + e.getMessage());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted", e);
+            }
+        }
+        return "\n" + dempano.bench.FillSummary.markdown(real, heldOut, "gradle accuracyReport");
     }
 
     /**

@@ -10,7 +10,6 @@ import dempano.batch.BatchRun;
 import dempano.batch.BatchSummary;
 import dempano.batch.ViewpointCsv;
 import dempano.batch.ViewpointCsvException;
-import dempano.dem.DemDirectory;
 import dempano.dem.DemSource;
 import dempano.dem.PriorityDem;
 import dempano.io.IoMessages;
@@ -21,7 +20,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.text.DecimalFormat;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -76,8 +74,7 @@ public final class BatchCommand implements Callable<Integer> {
         PrintStream err = System.err;
         PanoramaRequest defaults = defaults();
         boolean reference = panorama.referenceRenderer();
-        dempano.dem.VoidFill fill = panorama.voidFillMethod();
-        dempano.dem.PriorityDem.Blend blend = panorama.demBlend();
+        dempano.dem.DemFill fill = panorama.demFill(); // a bad --void-fill or --dem-blend: exit 2 before the CSV is read
         ViewpointCsv.Parsed parsed;
         try {
             parsed = ViewpointCsv.read(viewpoints, defaults);
@@ -89,13 +86,8 @@ public final class BatchCommand implements Callable<Integer> {
             err.println("dempano batch: ignoring columns " + String.join(", ", parsed.ignoredColumns()) + " (read: "
                     + String.join(", ", ViewpointCsv.COLUMNS) + ")");
         }
-        List<DemDirectory> sources = new ArrayList<>();
-        for (Path d : demDirs) {
-            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill); // a missing DEM folder: exit 1 before anything is created
-            one.warnings().forEach(w -> err.println("  warning: " + w));
-            sources.add(one);
-        }
-        DemSource dem = PriorityDem.of(sources, fill, blend);
+        // A missing DEM folder: exit 1 before anything is created.
+        DemSource dem = PriorityDem.open(demDirs, fill, w -> err.println("  warning: " + w));
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {

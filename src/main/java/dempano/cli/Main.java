@@ -2,7 +2,6 @@ package dempano.cli;
 
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
-import dempano.dem.DemDirectory;
 import dempano.dem.DemException;
 import dempano.dem.DemoTerrain;
 import dempano.io.OutputSet;
@@ -168,15 +167,8 @@ public final class Main implements Callable<Integer> {
         if (outParent != null && out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
-        dempano.dem.VoidFill fill = panorama.voidFillMethod();
-        dempano.dem.PriorityDem.Blend blend = panorama.demBlend();
-        List<DemDirectory> demSources = new java.util.ArrayList<>();
-        for (Path d : dirs) {
-            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill);
-            one.warnings().forEach(w -> System.err.println("  warning: " + w));
-            demSources.add(one);
-        }
-        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(demSources, fill, blend);
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(dirs, panorama.demFill(),
+                w -> System.err.println("  warning: " + w));
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
                 labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;

@@ -38,10 +38,6 @@ public class PanoramaOptions implements Serializable {
     /** The options shared with camera views (range, refraction, supersampling, exact distances, layers, renderer, ...). */
     @Mixin
     public RenderOptions view = new RenderOptions();
-    @Option(names = "--dem-blend", paramLabel = "as-is|delta-surface", defaultValue = "as-is",
-            description = "How a later --dem-dir fills the voids of an earlier one: as-is (default: its heights, bilinear where its grid differs) or delta-surface (its heights plus the difference between the two at the void's rim, interpolated over the void, so a coarser or offset source meets the first without a step). Measured in docs/coarse-fill.md.")
-    public String demBlend = "as-is";
-
     /**
      * The request these options make of {@code base} (its viewpoint and whatever these options do not
      * set are kept).
@@ -70,15 +66,14 @@ public class PanoramaOptions implements Serializable {
         return view.voidFillMethod();
     }
 
-    /** The value of {@code --dem-blend}. */
-    public dempano.dem.PriorityDem.Blend demBlend() {
-        return dempano.dem.PriorityDem.Blend.parse(demBlend);
+    /** The values of {@code --void-fill} and {@code --dem-blend}. */
+    public dempano.dem.DemFill demFill() {
+        return view.demFill();
     }
 
     /** Checks every option (a bad one is a bad argument before anything is read or rendered). */
     public void check() {
         applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
         view.check();
-        demBlend();
     }
 }

@@ -5,10 +5,8 @@ import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.camera.LensDistortion;
 import dempano.camera.PhotoOverrides;
-import dempano.dem.DemDirectory;
 import dempano.summits.SummitList;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -79,7 +77,7 @@ public final class PhotoCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PanoramaRequest settings = render.applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
         boolean reference = render.referenceRenderer();
-        dempano.dem.VoidFill fill = render.voidFillMethod();
+        dempano.dem.DemFill fill = render.demFill();
         PhotoOverrides overrides = overrides();
         if (image == null) {
             // Checked before anything is read, as before: a camera from flags needs its size.
@@ -96,13 +94,7 @@ public final class PhotoCommand implements Callable<Integer> {
         SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
         PhotoJob.Input input = new PhotoJob.Input(image, overrides, widthPx, heightPx,
                 headingRangeDeg == null ? Double.NaN : headingRangeDeg, settings, summits, out);
-        List<DemDirectory> sources = new ArrayList<>();
-        for (Path d : demDirs) {
-            DemDirectory one = new DemDirectory(d, DemDirectory.DEFAULT_CACHED_TILES, fill);
-            one.warnings().forEach(w -> System.err.println("  warning: " + w));
-            sources.add(one);
-        }
-        dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(sources, fill);
+        dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(demDirs, fill, w -> System.err.println("  warning: " + w));
         PhotoJob.Result done;
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
             done = PhotoJob.run(r, input, new PhotoJob.Log() {

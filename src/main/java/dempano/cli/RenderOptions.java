@@ -1,7 +1,9 @@
 package dempano.cli;
 
 import dempano.PanoramaRequest;
+import dempano.dem.DemFill;
 import dempano.dem.MissingTilePolicy;
+import dempano.dem.PriorityDem;
 import dempano.dem.VoidFill;
 import dempano.geo.Refraction;
 import dempano.panorama.DepthMode;
@@ -17,7 +19,7 @@ import picocli.CommandLine.Option;
 /**
  * The options that shape any rendered view, a panorama or a photograph's camera view, declared once as a
  * picocli mixin: range, refraction, supersampling, exact distances, layers, depth mode, near plane, level of
- * detail, missing tiles, renderer and void fill. {@link PanoramaOptions} holds these plus the panorama-only
+ * detail, missing tiles, renderer, void fill and DEM blend. {@link PanoramaOptions} holds these plus the panorama-only
  * ones (pixels per degree, elevation range, views, ...); {@code dempano photo} takes these alone, since its
  * pose and lens come from the photo or its own flags. Plain values: serializable (the Spark job ships them).
  */
@@ -48,6 +50,9 @@ public class RenderOptions implements Serializable {
     @Option(names = "--void-fill", paramLabel = "thin-plate|laplace|idw", defaultValue = "thin-plate",
             description = "How DEM voids no --dem-dir fills are interpolated: thin-plate (default: carries the slopes around a void on into it, so a summit in a void is rebuilt above its rim), laplace (smoothest membrane, never above the rim) or idw (inverse-distance weighting along eight directions, as GDAL's FillNodata; the previous default). Compared on surveyed summits in docs/void-fill.md.")
     public String voidFill = "thin-plate";
+    @Option(names = "--dem-blend", paramLabel = "delta-surface|as-is", defaultValue = "delta-surface",
+            description = "How a later --dem-dir fills the voids of an earlier one: delta-surface (default: its heights plus the difference between the two at the void's rim, interpolated over the void, so a coarser or offset source meets the first without a step; where it holds the first's true heights they go in unchanged) or as-is (its heights, bilinear where its grid differs). Measured in docs/coarse-fill.md.")
+    public String demBlend = "delta-surface";
 
     /**
      * The request these options make of {@code base}: its viewpoint, and whatever these options do not set,
@@ -98,10 +103,15 @@ public class RenderOptions implements Serializable {
         return VoidFill.parse(voidFill);
     }
 
+    /** The values of {@code --void-fill} and {@code --dem-blend}: how the DEM's voids are filled. */
+    public DemFill demFill() {
+        return new DemFill(voidFillMethod(), PriorityDem.Blend.parse(demBlend));
+    }
+
     /** Checks every option (a bad one is a bad argument before anything is read or rendered). */
     public void check() {
         applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
         referenceRenderer();
-        voidFillMethod();
+        demFill();
     }
 }

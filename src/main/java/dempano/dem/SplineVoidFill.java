@@ -15,8 +15,10 @@ package dempano.dem;
  * <p>The minimum solves a sparse symmetric positive-definite system (the energy's gradient = 0),
  * here by conjugate gradients, matrix-free, started from a solution on a grid coarsened 2:1 (and so
  * on recursively until few voids remain, where the inverse-distance fill starts it): the smooth,
- * slowly converging part of the solution comes from the coarse grids. Deterministic (one thread,
- * fixed order).
+ * slowly converging part of the solution comes from the coarse grids. Deterministic: the sums run in
+ * a fixed order on one thread; the operator, most of the work, is applied in parallel chunks on the
+ * common fork-join pool where a grid level has many voids, each sample computed exactly as on one
+ * thread, so the result does not depend on the number of threads.
  */
 final class SplineVoidFill {
     /**
@@ -38,6 +40,14 @@ final class SplineVoidFill {
      */
     private static final long ITERATION_BUDGET = 1_000_000;
     private static final int MIN_ITERATIONS = 60, MAX_ITERATIONS = 3000;
+    /**
+     * Voids per parallel chunk of the operator: below two chunks' worth (a grid level with few voids) it runs on
+     * the calling thread alone. The operator is evaluated sample by sample, so the split never changes a value;
+     * the conjugate-gradient sums stay sequential, in a fixed order.
+     */
+    private static final int CHUNK_UNKNOWNS = 16_384, MAX_CHUNKS = 64;
+    /** False: the operator on the calling thread only (for tests comparing both). */
+    static volatile boolean parallel = true;
 
     private SplineVoidFill() {
     }
@@ -142,6 +152,7 @@ final class SplineVoidFill {
             mark(stencil, n, r, c + 1);
         }
         int[] p = stencil.stream().toArray();
+        byte[] edges = edges(u, n);
         double[] full = new double[v.length];
         double[] lap = new double[v.length];
         // Right-hand side: minus the operator applied to the valid samples (voids at 0).
@@ -149,7 +160,7 @@ final class SplineVoidFill {
             full[i] = Double.isNaN(v[i]) ? 0 : v[i];
         }
         double[] b = new double[k];
-        apply(full, n, u, p, lap, membrane, plate, b);
+        apply(full, n, u, p, edges, lap, membrane, plate, b);
         for (int j = 0; j < k; j++) {
             b[j] = -b[j];
         }
@@ -160,7 +171,7 @@ final class SplineVoidFill {
             full[u[j]] = x[j];
         }
         double[] ap = new double[k];
-        apply(full, n, u, p, lap, membrane, plate, ap);
+        apply(full, n, u, p, edges, lap, membrane, plate, ap);
         double[] r = new double[k], d = new double[k];
         double rr = 0, bb = 0;
         for (int j = 0; j < k; j++) {
@@ -175,7 +186,7 @@ final class SplineVoidFill {
             for (int j = 0; j < k; j++) {
                 full[u[j]] = d[j];
             }
-            apply(full, n, u, p, lap, membrane, plate, ap);
+            apply(full, n, u, p, edges, lap, membrane, plate, ap);
             double dAd = 0;
             for (int j = 0; j < k; j++) {
                 dAd += d[j] * ap[j];
@@ -208,54 +219,113 @@ final class SplineVoidFill {
         }
     }
 
+    /** Neighbour flags per void: {@link #NORTH} (row above on the grid), {@link #SOUTH}, {@link #WEST}, {@link #EAST}. */
+    private static final int NORTH = 1, SOUTH = 2, WEST = 4, EAST = 8, ALL = NORTH | SOUTH | WEST | EAST;
+
+    /** For each void of {@code u}, which of its four neighbours lie on the grid (computed once per solve). */
+    private static byte[] edges(int[] u, int n) {
+        byte[] e = new byte[u.length];
+        for (int j = 0; j < u.length; j++) {
+            int r = u[j] / n, c = u[j] % n;
+            e[j] = (byte) ((r > 0 ? NORTH : 0) | (r < n - 1 ? SOUTH : 0) | (c > 0 ? WEST : 0) | (c < n - 1 ? EAST : 0));
+        }
+        return e;
+    }
+
     /**
      * The energy's Hessian (halved) applied to {@code full} (valid samples zero or not, as the
      * caller needs), evaluated at the voids {@code u} into {@code out}; {@code lap} is scratch that
-     * must be zero outside {@code p}.
+     * must be zero outside {@code p}; {@code edges} from {@link #edges}. The same operations in the same
+     * order for every void, so the same result to the bit, whether a void is inside the grid (the branch-free
+     * path, nearly all of them) or on its border.
      */
-    private static void apply(double[] full, int n, int[] u, int[] p, double[] lap, double membrane, double plate,
-                              double[] out) {
-        if (plate > 0) {
-            for (int i : p) {
-                lap[i] = full[i - n] + full[i + n] + full[i - 1] + full[i + 1] - 4 * full[i];
+    private static void apply(double[] full, int n, int[] u, int[] p, byte[] edges, double[] lap, double membrane,
+                              double plate, double[] out) {
+        int chunks = parallel ? Math.min(MAX_CHUNKS, u.length / CHUNK_UNKNOWNS) : 1;
+        if (chunks < 2) {
+            if (plate > 0) {
+                laplacians(full, n, p, lap, 0, p.length);
             }
+            applyRange(full, n, u, edges, lap, membrane, plate, out, 0, u.length);
+            return;
         }
-        for (int j = 0; j < u.length; j++) {
-            int i = u[j], r = i / n, c = i % n;
+        // Every output sample depends on its inputs alone: any split gives the same values, bit for bit.
+        if (plate > 0) {
+            java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> laplacians(full, n, p, lap,
+                    (int) ((long) p.length * c / chunks), (int) ((long) p.length * (c + 1) / chunks)));
+        }
+        java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> applyRange(full, n, u, edges, lap, membrane, plate,
+                out, (int) ((long) u.length * c / chunks), (int) ((long) u.length * (c + 1) / chunks)));
+    }
+
+    /** The discrete Laplacian of {@code full} at {@code p[from..to)} into {@code lap}. */
+    private static void laplacians(double[] full, int n, int[] p, double[] lap, int from, int to) {
+        for (int k = from; k < to; k++) {
+            int i = p[k];
+            lap[i] = full[i - n] + full[i + n] + full[i - 1] + full[i + 1] - 4 * full[i];
+        }
+    }
+
+    /** {@link #apply} at the voids {@code u[from..to)}, the Laplacians already in {@code lap}. */
+    private static void applyRange(double[] full, int n, int[] u, byte[] edges, double[] lap, double membrane,
+                                   double plate, double[] out, int from, int to) {
+        boolean useMembrane = membrane > 0, usePlate = plate > 0;
+        for (int j = from; j < to; j++) {
+            int i = u[j], e = edges[j];
             double s = 0;
-            if (membrane > 0) {
+            if (e == ALL) {
+                if (useMembrane) {
+                    double sum = 0;
+                    sum += full[i - n];
+                    sum += full[i + n];
+                    sum += full[i - 1];
+                    sum += full[i + 1];
+                    s += membrane * (4 * full[i] - sum);
+                }
+                if (usePlate) {
+                    double t = -4 * lap[i];
+                    t += lap[i - n];
+                    t += lap[i + n];
+                    t += lap[i - 1];
+                    t += lap[i + 1];
+                    s += plate * t;
+                }
+                out[j] = s;
+                continue;
+            }
+            if (useMembrane) {
                 int degree = 0;
                 double sum = 0;
-                if (r > 0) {
+                if ((e & NORTH) != 0) {
                     degree++;
                     sum += full[i - n];
                 }
-                if (r < n - 1) {
+                if ((e & SOUTH) != 0) {
                     degree++;
                     sum += full[i + n];
                 }
-                if (c > 0) {
+                if ((e & WEST) != 0) {
                     degree++;
                     sum += full[i - 1];
                 }
-                if (c < n - 1) {
+                if ((e & EAST) != 0) {
                     degree++;
                     sum += full[i + 1];
                 }
                 s += membrane * (degree * full[i] - sum);
             }
-            if (plate > 0) {
+            if (usePlate) {
                 double t = -4 * lap[i];
-                if (r > 0) {
+                if ((e & NORTH) != 0) {
                     t += lap[i - n];
                 }
-                if (r < n - 1) {
+                if ((e & SOUTH) != 0) {
                     t += lap[i + n];
                 }
-                if (c > 0) {
+                if ((e & WEST) != 0) {
                     t += lap[i - 1];
                 }
-                if (c < n - 1) {
+                if ((e & EAST) != 0) {
                     t += lap[i + 1];
                 }
                 s += plate * t;

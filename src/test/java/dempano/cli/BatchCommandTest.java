@@ -113,6 +113,12 @@ class BatchCommandTest {
         assertTrue(d.exactDistances());
         // A bad value is a bad argument (exit 2), as in the other commands; so is a panorama-only option.
         assertEquals(2, Main.run("photo", "--dem-dir", "d", "--void-fill", "kriging"));
+        assertEquals(2, Main.run("photo", "--dem-dir", "d", "--dem-blend", "feather"));
+        // The DEM fill reaches the DEM: the best measured by default, the one asked for otherwise.
+        assertEquals(dempano.dem.DemFill.DEFAULT, plain.render.demFill());
+        PhotoCommand asIs = new PhotoCommand();
+        new picocli.CommandLine(asIs).parseArgs("--dem-dir", "d", "--dem-blend", "as-is", "--void-fill", "idw");
+        assertEquals(new dempano.dem.DemFill(dempano.dem.VoidFill.IDW, dempano.dem.PriorityDem.Blend.AS_IS), asIs.render.demFill());
         assertEquals(2, Main.run("photo", "--dem-dir", "d", "--ppd", "30"));
     }
 

@@ -18,12 +18,12 @@ import org.junit.jupiter.api.Assumptions;
  * outside CI: with the environment variable {@code CI} set (as {@code .ci/run} runs) a missing tool
  * fails the test, so CI cannot pass without having run them.
  */
-final class Gdal {
+public final class Gdal {
     private Gdal() {
     }
 
     /** The tool's path on PATH; skips (locally) or fails (under CI) when it is not installed. */
-    static String require(String tool) {
+    public static String require(String tool) {
         String path = System.getenv("PATH");
         if (path != null) {
             for (String d : path.split(File.pathSeparator)) {

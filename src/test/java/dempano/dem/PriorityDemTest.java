@@ -56,7 +56,9 @@ class PriorityDemTest {
         DemSource a = new InMemoryDem("A", List.of(tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A/N46E008")));
         DemSource b = new InMemoryDem("B", List.of(tile(WEST, 120, PriorityDemTest::fb, (r, c) -> false, "B/N46E008"),
                 tile(EAST, 120, PriorityDemTest::fb, (r, c) -> false, "B/N46E009")));
-        Mosaic m = Mosaic.around(new PriorityDem(List.of(a, b)), 46.5, 9.0, 20_000, MissingTilePolicy.ERROR);
+        // As-is: every sample tells which source served it (the default delta surface is tested below).
+        Mosaic m = Mosaic.around(new PriorityDem(List.of(a, b), VoidFill.DEFAULT, PriorityDem.Blend.AS_IS), 46.5, 9.0, 20_000,
+                MissingTilePolicy.ERROR);
         assertEquals(List.of(WEST, EAST), m.tilesUsed());
         assertEquals("A, then B", m.sourceDescription());
         for (int row = 0; row < m.rows(); row++) {
@@ -79,7 +81,7 @@ class PriorityDemTest {
         HgtTile a = tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A");
         // B is void over the hole's first five rows too.
         HgtTile b = tile(WEST, 120, PriorityDemTest::fb, (r, c) -> r < 35, "B");
-        HgtTile merged = PriorityDem.merge(a, List.of(b));
+        HgtTile merged = PriorityDem.merge(a, List.of(b), VoidFill.DEFAULT, PriorityDem.Blend.AS_IS);
         assertEquals(5 * 30, merged.voids().voidCells());
         assertTrue(merged.isFilledVoid(32, 50));
         assertEquals(fb(47 - 40 / 120.0, 8 + 50 / 120.0), merged.heightMetres(40, 50), 1e-3);
@@ -91,7 +93,7 @@ class PriorityDemTest {
         HgtTile a = tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A");
         for (int ipd : new int[] {240, 60, 90}) {
             HgtTile b = tile(WEST, ipd, PriorityDemTest::fb, (r, c) -> false, "B" + ipd);
-            HgtTile merged = PriorityDem.merge(a, List.of(b));
+            HgtTile merged = PriorityDem.merge(a, List.of(b), VoidFill.DEFAULT, PriorityDem.Blend.AS_IS);
             assertEquals(121, merged.samplesPerSide());
             for (int r = 30; r < 50; r++) {
                 for (int c = 40; c < 70; c++) {
@@ -103,7 +105,7 @@ class PriorityDemTest {
         }
         // A coarser filler's void: the A samples on it and those interpolated from it stay voids.
         HgtTile holey = tile(WEST, 60, PriorityDemTest::fb, (r, c) -> r == 20 && c == 25, "B");
-        HgtTile merged = PriorityDem.merge(a, List.of(holey));
+        HgtTile merged = PriorityDem.merge(a, List.of(holey), VoidFill.DEFAULT, PriorityDem.Blend.AS_IS);
         assertTrue(merged.isFilledVoid(40, 50), "on B's void (20, 25)");
         assertTrue(merged.isFilledVoid(41, 50), "half-way to B's void");
         assertTrue(merged.isFilledVoid(40, 51), "half-way to B's void");
@@ -132,7 +134,9 @@ class PriorityDemTest {
         Path tif = aDir.resolve("Copernicus_DSM_COG_30_N46_00_E008_00_DEM.tif");
         GeoTiffTestFiles.write(tif, spec, (r, c) -> r >= 100 && r < 110 && c >= 200 && c < 230 ? -9999 : 500 + r % 7);
         Path hgt = HgtTestFiles.write(bDir, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 2000 + c % 5));
-        PriorityDem p = new PriorityDem(List.of(new DemDirectory(aDir), new DemDirectory(bDir)));
+        // As-is, so that each sample tells its source (the default blend is tested below).
+        PriorityDem p = new PriorityDem(List.of(new DemDirectory(aDir), new DemDirectory(bDir)), VoidFill.DEFAULT,
+                PriorityDem.Blend.AS_IS);
         HgtTile t = p.tile(WEST).orElseThrow();
         assertEquals(500 + 104 % 7, t.heightMetres(104, 199));
         assertEquals(2000 + 210 % 5, t.heightMetres(105, 210));
@@ -203,6 +207,97 @@ class PriorityDemTest {
                 for (int c = 0; c < 121; c++) {
                     assertEquals(truth.heightMetres(r, c), restored.heightMetres(r, c), fill + " restored exactly at " + r + ", " + c);
                 }
+            }
+        }
+    }
+
+    /**
+     * The default is the best measured fill: thin-plate interpolation, delta-surface blend. Through the default
+     * constructor B (another plane) fills A's hole with A's own plane (the A − B plane interpolated, added to B),
+     * as with the blend named; B's samples are still counted as B's.
+     */
+    @Test
+    void theDefaultIsTheDeltaSurfaceBlendWithTheThinPlateFill() throws IOException {
+        assertEquals(new DemFill(VoidFill.THIN_PLATE, PriorityDem.Blend.DELTA_SURFACE), DemFill.DEFAULT);
+        DemSource a = new InMemoryDem("A", List.of(tile(WEST, 120, PriorityDemTest::fa, PriorityDemTest::hole, "A/N46E008")));
+        DemSource b = new InMemoryDem("B", List.of(tile(WEST, 60, PriorityDemTest::fb, (r, c) -> false, "B/N46E008")));
+        PriorityDem p = new PriorityDem(List.of(a, b));
+        assertEquals(DemFill.DEFAULT, p.fill());
+        HgtTile t = p.tile(WEST).orElseThrow();
+        for (int r = 30; r < 50; r++) {
+            for (int c = 40; c < 70; c++) {
+                assertEquals(fa(47 - r / 120.0, 8 + c / 120.0), t.heightMetres(r, c), 0.05, "default blend at " + r + ", " + c);
+            }
+        }
+        assertEquals(List.of(new DemContribution("A/N46E008", "unknown", 121 * 121 - 600),
+                new DemContribution("B/N46E008", "unknown", 600)), t.contributions());
+
+        // Opened from folders as the command line does: the fill asked for is the one used; one folder is itself.
+        Path one = Files.createDirectory(dir.resolve("one")), two = Files.createDirectory(dir.resolve("two"));
+        HgtTestFiles.write(one, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 100));
+        HgtTestFiles.write(two, "N46E008.hgt", HgtTestFiles.bytes(1201, (r, c) -> 200));
+        List<String> warnings = new java.util.ArrayList<>();
+        Files.writeString(one.resolve("N99E999.hgt"), "x");
+        DemFill idwAsIs = new DemFill(VoidFill.IDW, PriorityDem.Blend.AS_IS);
+        DemSource both = PriorityDem.open(List.of(one, two), idwAsIs, warnings::add);
+        assertEquals(idwAsIs, ((PriorityDem) both).fill());
+        assertTrue(PriorityDem.open(List.of(one), DemFill.DEFAULT, w -> { }) instanceof DemDirectory);
+        assertEquals(1, warnings.size(), warnings.toString());
+        assertTrue(warnings.get(0).contains("N99E999.hgt"), warnings.toString());
+        assertThrows(IllegalArgumentException.class, () -> PriorityDem.open(List.of(), DemFill.DEFAULT, w -> { }));
+    }
+
+    /**
+     * Issue 20: a two-source render where B holds the true heights of A's voids restores them exactly, with the
+     * default (delta-surface) blend. A is the real N46E008 with a 101 × 201-sample hole punched into the terrain
+     * south of the viewpoint (on top of its own SRTM voids); B is the tile as it is. On every sample where both
+     * have data A − B is 0, so the interpolated difference is 0 and B's heights go in unchanged; the voids
+     * neither has are interpolated from the same samples as B's own. So the merged tile equals B's, sample for
+     * sample, and the panorama from (A, B) equals the one from B alone, bit for bit.
+     */
+    @Test
+    void aTwoSourceRenderWhereBHoldsTheTruthOfAsVoidsRestoresThemExactly() throws IOException {
+        Path hgt = dempano.SharedData.demFile("N46E008.hgt");
+        byte[] bytes = Files.readAllBytes(hgt);
+        int n = 1201, punched = 0;
+        for (int r = 560; r <= 660; r++) {
+            for (int c = 300; c <= 500; c++) {
+                int i = 2 * (r * n + c);
+                punched += bytes[i] == (byte) 0x80 && bytes[i + 1] == 0 ? 0 : 1;
+                bytes[i] = (byte) 0x80;
+                bytes[i + 1] = 0;
+            }
+        }
+        assertTrue(punched > 15_000, "the hole lies mostly on valid data: " + punched);
+        Path aDir = Files.createDirectory(dir.resolve("a"));
+        HgtTestFiles.write(aDir, "N46E008.hgt", bytes);
+        DemDirectory b = new DemDirectory(hgt.getParent());
+        PriorityDem ab = new PriorityDem(List.of(new DemDirectory(aDir), b));
+        assertEquals(PriorityDem.Blend.DELTA_SURFACE, ab.fill().blend());
+        HgtTile truth = b.tile(WEST).orElseThrow(), merged = ab.tile(WEST).orElseThrow();
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                assertEquals(Float.floatToIntBits(truth.heightMetres(r, c)), Float.floatToIntBits(merged.heightMetres(r, c)),
+                        "sample " + r + ", " + c);
+                assertEquals(truth.isFilledVoid(r, c), merged.isFilledVoid(r, c), "void at " + r + ", " + c);
+            }
+        }
+        assertEquals(punched, merged.contributions().get(1).samples(), "B served the punched samples");
+
+        // The hole lies 4–12 km south of the viewpoint, in view.
+        dempano.PanoramaRequest req = dempano.PanoramaRequest.at(46.57, 8.33).withRangeMetres(15_000).withPixelsPerDegree(2)
+                .withColour(true);
+        dempano.panorama.Panorama fromB, fromAb;
+        try (dempano.PanoramaRenderer r = dempano.PanoramaRenderer.openReference(b)) {
+            fromB = r.render(req);
+        }
+        try (dempano.PanoramaRenderer r = dempano.PanoramaRenderer.openReference(ab)) {
+            fromAb = r.render(req);
+        }
+        org.junit.jupiter.api.Assertions.assertArrayEquals(fromB.distanceArray(), fromAb.distanceArray(), "distances");
+        for (int y = 0; y < fromB.heightPx(); y++) {
+            for (int x = 0; x < fromB.widthPx(); x++) {
+                assertEquals(fromB.argb(x, y), fromAb.argb(x, y), "colour at " + x + ", " + y);
             }
         }
     }

@@ -1,7 +1,6 @@
 package dempano.spark;
 
 import dempano.PanoramaRenderer;
-import dempano.dem.DemDirectory;
 import dempano.dem.DemSource;
 import dempano.dem.PriorityDem;
 import java.io.IOException;
@@ -94,11 +93,11 @@ final class ExecutorRenderer {
     }
 
     private static DemSource dem(JobSettings s) {
-        List<DemDirectory> dirs = new ArrayList<>();
+        List<java.nio.file.Path> dirs = new ArrayList<>();
         for (String d : s.demDirs) {
-            dirs.add(new DemDirectory(localDem(d, s), DemDirectory.DEFAULT_CACHED_TILES, s.panorama.voidFillMethod()));
+            dirs.add(localDem(d, s));
         }
-        return PriorityDem.of(dirs, s.panorama.voidFillMethod());
+        return PriorityDem.open(dirs, s.panorama.demFill(), w -> System.err.println("  warning: " + w)); // in the executor's log
     }
 
     /**

@@ -46,7 +46,7 @@ public final class JobSettings implements Serializable {
 
     /** The key under which an executor keeps its renderer: the DEM and the renderer kind. */
     String rendererKey() {
-        return String.join("\u0000", demDirs) + "\u0000" + reference() + "\u0000" + panorama.view.voidFill + "\u0000" + hadoop.hashCode();
+        return String.join("\u0000", demDirs) + "\u0000" + reference() + "\u0000" + panorama.view.voidFill + "\u0000" + panorama.view.demBlend + "\u0000" + hadoop.hashCode();
     }
 
     /** Checks the settings on the driver (a bad option fails before any task starts). */
