@@ -7,6 +7,7 @@ import com.jme3.scene.mesh.IndexBuffer;
 import dempano.panorama.SeenTriangles;
 import dempano.panorama.ViewCapture;
 import java.nio.FloatBuffer;
+import java.util.Arrays;
 import java.util.List;
 import java.util.stream.IntStream;
 
@@ -30,63 +31,47 @@ public final class SeenTriangleResolver {
      */
     public static SeenTriangles resolve(List<Geometry> drawn, ViewCapture[] captures, EyePlacement placement,
                                         double rangeMetres) {
-        int geometries = drawn.size();
-        int[] triangleCount = new int[geometries];
-        for (int g = 0; g < geometries; g++) {
+        int[][] compactOf = new int[drawn.size()][]; // per geometry: primitive → compact index, −1 unseen
+        int[] triangleCount = new int[drawn.size()];
+        for (int g = 0; g < drawn.size(); g++) {
             triangleCount[g] = drawn.get(g).getMesh().getTriangleCount();
         }
+        int[][] triangleOfSample = new int[captures.length][];
+        int[] seenGeometry = new int[1024], seenPrimitive = new int[1024];
+        int seen = 0;
         for (int k = 0; k < captures.length; k++) {
-            if (captures[k].geometryIds() == null) {
+            ViewCapture c = captures[k];
+            if (c.geometryIds() == null) {
                 throw new IllegalArgumentException("view " + k + " was read without surface identities");
             }
-        }
-        // Three passes, the two over samples in parallel: mark each (geometry, primitive) seen; number the seen
-        // ones in (geometry, primitive) order; map every sample to its number. Which number a triangle gets does
-        // not change any distance (the stitcher orders candidates by where they were seen, not by number).
-        // per geometry: primitive → 0 unseen, else 1 + compact index (arrays allocated up front: zeroed memory)
-        int[][] compactOf = new int[geometries][];
-        for (int g = 0; g < geometries; g++) {
-            compactOf[g] = new int[triangleCount[g]];
-        }
-        IntStream.range(0, captures.length).parallel().forEach(k -> {
-            int[] gids = captures[k].geometryIds(), pids = captures[k].primitiveIds();
-            for (int i = 0; i < gids.length; i++) {
-                int g = gids[i], p = pids[i];
-                if (g >= 0 && g < geometries && p >= 0 && p < triangleCount[g]) {
-                    compactOf[g][p] = 1; // concurrent marks store the same value
-                }
-            }
-        });
-        int seen = 0;
-        for (int g = 0; g < geometries; g++) {
-            int[] map = compactOf[g];
-            for (int p = 0; p < map.length; p++) {
-                if (map[p] != 0) {
-                    map[p] = ++seen;
-                }
-            }
-        }
-        int[] seenGeometry = new int[seen], seenPrimitive = new int[seen];
-        for (int g = 0; g < geometries; g++) {
-            int[] map = compactOf[g];
-            for (int p = 0; p < map.length; p++) {
-                if (map[p] != 0) {
-                    seenGeometry[map[p] - 1] = g;
-                    seenPrimitive[map[p] - 1] = p;
-                }
-            }
-        }
-        int[][] triangleOfSample = new int[captures.length][];
-        IntStream.range(0, captures.length).parallel().forEach(k -> {
-            int[] gids = captures[k].geometryIds(), pids = captures[k].primitiveIds();
+            int[] gids = c.geometryIds(), pids = c.primitiveIds();
             int[] out = new int[gids.length];
             for (int i = 0; i < gids.length; i++) {
                 int g = gids[i], p = pids[i];
                 // An id outside the scene (never expected) is treated as unknown, not trusted.
-                out[i] = g >= 0 && g < geometries && p >= 0 && p < triangleCount[g] ? compactOf[g][p] - 1 : -1;
+                if (g < 0 || g >= compactOf.length || p < 0 || p >= triangleCount[g]) {
+                    out[i] = -1;
+                    continue;
+                }
+                int[] map = compactOf[g];
+                if (map == null) {
+                    map = compactOf[g] = new int[triangleCount[g]];
+                    Arrays.fill(map, -1);
+                }
+                int t = map[p];
+                if (t < 0) {
+                    if (seen == seenGeometry.length) {
+                        seenGeometry = Arrays.copyOf(seenGeometry, seen * 2);
+                        seenPrimitive = Arrays.copyOf(seenPrimitive, seen * 2);
+                    }
+                    seenGeometry[seen] = g;
+                    seenPrimitive[seen] = p;
+                    t = map[p] = seen++;
+                }
+                out[i] = t;
             }
             triangleOfSample[k] = out;
-        });
+        }
         double[] corners = new double[seen * 9];
         boolean[] skirt = new boolean[seen], simplified = new boolean[seen];
         boolean[] fullResolution = new boolean[drawn.size()];
@@ -95,9 +80,9 @@ public final class SeenTriangleResolver {
         }
         int[] sg = seenGeometry, sp = seenPrimitive;
         Buffers[] buffers = new Buffers[drawn.size()];
-        for (int t = 0; t < seen; t++) {
-            if (buffers[seenGeometry[t]] == null) {
-                buffers[seenGeometry[t]] = new Buffers(drawn.get(seenGeometry[t]).getMesh());
+        for (int g = 0; g < drawn.size(); g++) {
+            if (compactOf[g] != null) {
+                buffers[g] = new Buffers(drawn.get(g).getMesh());
             }
         }
         IntStream.range(0, seen).parallel().forEach(t -> {
