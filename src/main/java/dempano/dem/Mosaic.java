@@ -244,6 +244,60 @@ public final class Mosaic {
         }
     }
 
+    /**
+     * What this mosaic's samples are made of, held weakly: its tile grid (south-west corner, tiles
+     * each way, samples per degree), the tile object in every slot and which slots are sea level.
+     * Tiles are immutable, so another mosaic that {@link SampleIdentity#matches} it has the very same
+     * sample at every (row, column): what a cache of values derived from the samples (the ray
+     * probe's maximum pyramid) may be keyed on. A slot whose tile was since collected never matches.
+     */
+    public SampleIdentity sampleIdentity() {
+        return new SampleIdentity(this);
+    }
+
+    /** See {@link #sampleIdentity()}. */
+    public static final class SampleIdentity {
+        private final int latSouthDeg, lonWestDeg, tilesNorthSouth, tilesEastWest, intervalsPerDegree;
+        private final java.lang.ref.WeakReference<?>[][] tiles;
+        private final boolean[][] seaLevel;
+
+        private SampleIdentity(Mosaic m) {
+            latSouthDeg = m.latSouthDeg;
+            lonWestDeg = m.lonWestDeg;
+            tilesNorthSouth = m.tilesNorthSouth;
+            tilesEastWest = m.tilesEastWest;
+            intervalsPerDegree = m.intervalsPerDegree;
+            tiles = new java.lang.ref.WeakReference<?>[tilesNorthSouth][tilesEastWest];
+            seaLevel = new boolean[tilesNorthSouth][];
+            for (int r = 0; r < tilesNorthSouth; r++) {
+                for (int c = 0; c < tilesEastWest; c++) {
+                    tiles[r][c] = m.tiles[r][c] == null ? null : new java.lang.ref.WeakReference<>(m.tiles[r][c]);
+                }
+                seaLevel[r] = m.seaLevel[r].clone();
+            }
+        }
+
+        /** Whether {@code m} has the same tile grid, the same tile object in every slot and the same sea-level slots. */
+        public boolean matches(Mosaic m) {
+            if (m.latSouthDeg != latSouthDeg || m.lonWestDeg != lonWestDeg || m.tilesNorthSouth != tilesNorthSouth
+                    || m.tilesEastWest != tilesEastWest || m.intervalsPerDegree != intervalsPerDegree) {
+                return false;
+            }
+            for (int r = 0; r < tilesNorthSouth; r++) {
+                if (!java.util.Arrays.equals(seaLevel[r], m.seaLevel[r])) {
+                    return false;
+                }
+                for (int c = 0; c < tilesEastWest; c++) {
+                    HgtTile t = m.tiles[r][c];
+                    if (t == null ? tiles[r][c] != null : tiles[r][c] == null || tiles[r][c].get() != t) {
+                        return false;
+                    }
+                }
+            }
+            return true;
+        }
+    }
+
     /** Height of a sample, metres; NaN where the range circle did not need the tile. */
     public float sample(int row, int col) {
         long at = locate(row, col);

@@ -131,6 +131,9 @@ public final class Stitcher {
      */
     static final double GRAZING_SINE = 0.02;
 
+    /** Interleaved stripes of rows the per-pixel walk is split into, for the parallel stream to balance. */
+    static final int ROW_STRIPES = 64;
+
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
     private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                    Exact exact, int[] argbOut, float[] rangeOut) {
@@ -142,69 +145,75 @@ public final class Stitcher {
         java.util.concurrent.atomic.LongAdder exactCount = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
-        IntStream.range(0, target.heightPx()).parallel().forEach(row -> {
-            double[][] scratch = new double[4][4]; // one neighbourhood buffer per row, not per pixel
+        int height = target.heightPx(), stripes = Math.min(height, ROW_STRIPES);
+        // Rows are dealt out in interleaved stripes (stripe s: rows s, s + stripes, …), not in blocks of adjacent
+        // rows: the probed pixels crowd around the horizon rows, so blocks of rows would leave one core with most
+        // of the work; every stripe holds the same mix of rows. The output does not depend on the split.
+        IntStream.range(0, stripes).parallel().forEach(stripe -> {
+            double[][] scratch = new double[4][4]; // one neighbourhood buffer per stripe, not per pixel
             double[] p = new double[4];
             double[] ray = new double[3];
             int[] candidates = new int[16];
             double[] hint = new double[5];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
-            for (int col = 0; col < width; col++) {
-                int view = sampling.locate(col, row, p, ray);
-                int i = row * width + col;
-                if (view < 0) { // no ray: nothing to see
-                    if (argbOut != null) {
-                        argbOut[i] = 0xff000000;
-                    }
-                    rangeOut[i] = Float.NaN;
-                    continue;
-                }
-                if (argbOut != null) {
-                    argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
-                }
-                if (inverseEyeDepth == null) {
-                    rangeOut[i] = nearestRange(captures[view].depth(), layout, p[0], p[1]);
-                    continue;
-                }
-                double r = Double.NaN;
-                if (seen != null) {
-                    // The pixel's own ray in the eye's frame (jME axes: east, up, south).
-                    double dx = ray[0], dy = ray[1], dz = ray[2];
-                    if (skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]))) {
-                        r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
-                    } else {
-                        r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
-                    }
-                    if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && hint[4] > 0
-                            && probe != null) {
-                        // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
-                        // distance (and the level of detail leaves the horizon rows unbounded): the full-
-                        // resolution surface decides, searched around the triangle's hit. A full-resolution
-                        // patch's triangle is that surface already.
-                        double refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
-                        if (refined < Double.POSITIVE_INFINITY) {
-                            r = refined;
-                            rowProbed++;
-                        } else {
-                            rowExact++;
+            for (int row = stripe; row < height; row += stripes) {
+                for (int col = 0; col < width; col++) {
+                    int view = sampling.locate(col, row, p, ray);
+                    int i = row * width + col;
+                    if (view < 0) { // no ray: nothing to see
+                        if (argbOut != null) {
+                            argbOut[i] = 0xff000000;
                         }
-                    } else if (!Double.isNaN(r)) {
-                        rowExact++;
-                    } else if (probe != null
-                            && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
-                                    Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth[view], layout, p)),
-                                    2 * hint[2] + 500))
-                            && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
-                        rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
-                    } else if (hint[0] > 0) {
-                        r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
-                        rowExact++;
-                    } else {
-                        r = Double.NaN;
-                        rowFallback++;
+                        rangeOut[i] = Float.NaN;
+                        continue;
                     }
+                    if (argbOut != null) {
+                        argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
+                    }
+                    if (inverseEyeDepth == null) {
+                        rangeOut[i] = nearestRange(captures[view].depth(), layout, p[0], p[1]);
+                        continue;
+                    }
+                    double r = Double.NaN;
+                    if (seen != null) {
+                        // The pixel's own ray in the eye's frame (jME axes: east, up, south).
+                        double dx = ray[0], dy = ray[1], dz = ray[2];
+                        if (skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]))) {
+                            r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
+                        } else {
+                            r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
+                        }
+                        if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && hint[4] > 0
+                                && probe != null) {
+                            // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
+                            // distance (and the level of detail leaves the horizon rows unbounded): the full-
+                            // resolution surface decides, searched around the triangle's hit. A full-resolution
+                            // patch's triangle is that surface already.
+                            double refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
+                            if (refined < Double.POSITIVE_INFINITY) {
+                                r = refined;
+                                rowProbed++;
+                            } else {
+                                rowExact++;
+                            }
+                        } else if (!Double.isNaN(r)) {
+                            rowExact++;
+                        } else if (probe != null
+                                && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
+                                        Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth[view], layout, p)),
+                                        2 * hint[2] + 500))
+                                && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
+                            rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
+                        } else if (hint[0] > 0) {
+                            r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
+                            rowExact++;
+                        } else {
+                            r = Double.NaN;
+                            rowFallback++;
+                        }
+                    }
+                    rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth[view], layout, p, scratch) : r);
                 }
-                rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth[view], layout, p, scratch) : r);
             }
             exactCount.add(rowExact);
             probed.add(rowProbed);
@@ -281,9 +290,9 @@ public final class Stitcher {
      * @param candidates a 16-int scratch buffer, overwritten
      * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
      *                   samples (else 0), [1] and [2] the distances to the nearest and the farthest
-     *                   candidate's first corner; when a distance is returned: [3] the sine of the
-     *                   incidence on the triangle met (1 for sky), [4] 1 if that triangle is a
-     *                   simplified patch's ({@link SeenTriangles#simplified()}), else 0
+     *                   candidate's first corner; when a distance is returned: [4] 1 if the triangle
+     *                   met is a simplified patch's ({@link SeenTriangles#simplified()}), else 0, and
+     *                   [3] the sine of the incidence on it if so (only then is it asked), else 1
      */
     static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
                              double dz, int[] candidates, double[] hint) {
@@ -296,8 +305,9 @@ public final class Stitcher {
             if (t >= 0 && tri[y0 * w + x0 + 1] == t && tri[(y0 + 1) * w + x0] == t && tri[(y0 + 1) * w + x0 + 1] == t) {
                 double d = seen.skirt()[t] ? Double.POSITIVE_INFINITY : seen.distanceAlong(t, dx, dy, dz);
                 if (d < Double.POSITIVE_INFINITY) {
-                    hint[3] = seen.incidenceSine(t, dx, dy, dz);
-                    hint[4] = seen.simplified()[t] ? 1 : 0;
+                    boolean simplified = seen.simplified()[t];
+                    hint[3] = simplified ? seen.incidenceSine(t, dx, dy, dz) : 1; // only a simplified patch's is asked
+                    hint[4] = simplified ? 1 : 0;
                     return d;
                 }
             }
@@ -344,8 +354,9 @@ public final class Stitcher {
         if (met >= 0 && seen.skirt()[met]) {
             best = Double.POSITIVE_INFINITY; // a skirt hangs below the surface: the ray went under a simplified patch
         } else if (best < Double.POSITIVE_INFINITY || n == 0) {
-            hint[3] = met < 0 ? 1 : seen.incidenceSine(met, dx, dy, dz);
-            hint[4] = met >= 0 && seen.simplified()[met] ? 1 : 0;
+            boolean simplified = met >= 0 && seen.simplified()[met];
+            hint[3] = simplified ? seen.incidenceSine(met, dx, dy, dz) : 1;
+            hint[4] = simplified ? 1 : 0;
             return best;
         }
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;
@@ -371,6 +382,18 @@ public final class Stitcher {
     static int bilinearColour(byte[] rgba, ViewLayout l, double px, double py) {
         int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
         double fx = px - x0, fy = py - y0;
+        int viewWidth = l.widthPx();
+        if (x0 >= 0 && y0 >= 0 && x0 + 1 < viewWidth && y0 + 1 < l.heightPx()) {
+            // Inside the view (most pixels): no clamping, the same weights summed in the same order as below.
+            int o0 = (y0 * viewWidth + x0) * 4, o1 = o0 + 4, o2 = o0 + 4 * viewWidth, o3 = o2 + 4;
+            double w0 = (1 - fx) * (1 - fy), w1 = fx * (1 - fy), w2 = (1 - fx) * fy, w3 = fx * fy;
+            double r = w0 * (rgba[o0] & 0xff) + w1 * (rgba[o1] & 0xff) + w2 * (rgba[o2] & 0xff) + w3 * (rgba[o3] & 0xff);
+            double gr = w0 * (rgba[o0 + 1] & 0xff) + w1 * (rgba[o1 + 1] & 0xff) + w2 * (rgba[o2 + 1] & 0xff)
+                    + w3 * (rgba[o3 + 1] & 0xff);
+            double b = w0 * (rgba[o0 + 2] & 0xff) + w1 * (rgba[o1 + 2] & 0xff) + w2 * (rgba[o2 + 2] & 0xff)
+                    + w3 * (rgba[o3 + 2] & 0xff);
+            return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
+        }
         double r = 0, gr = 0, b = 0;
         for (int k = 0; k < 4; k++) {
             int x = clampX(l, x0 + (k & 1)), y = clampY(l, y0 + (k >> 1));

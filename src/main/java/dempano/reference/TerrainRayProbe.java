@@ -19,8 +19,11 @@ import dempano.terrain.Triangulation;
  * (blocks of {@link #BLOCK_CELLS} cells, then single cells) proves the ray above every sample it
  * can pass over. Where it cannot, it computes the ray where it crosses the triangulation's edges:
  * the clearance is nearly linear between them, so its minima (crests) are computed, not stepped
- * over. The pyramid's blocks are filled on first use and belong to this probe, made for one mosaic
- * and one render: nothing outlives it. Thread-safe.
+ * over. The pyramid's blocks are filled on first use. A pyramid is kept for the next probe (one, the
+ * last made) and reused by a probe whose mosaic holds the same samples ({@link Mosaic#sampleIdentity}:
+ * the same tile grid, the same immutable tile objects in every slot, the same sea-level slots), as
+ * consecutive renders over cached tiles have; any other mosaic, or a tile since collected, gets a
+ * new pyramid. Thread-safe.
  */
 public final class TerrainRayProbe implements RayProbe {
     /** Near the eye, where a cell is a large part of the distance, steps are at most this times the distance. */
@@ -54,8 +57,38 @@ public final class TerrainRayProbe implements RayProbe {
     /** Cell steps' horizontal length: one of the mosaic's cells, the narrower (east–west) way. */
     private final double cellStepMetres;
     /** Per level: block rows and columns, and each block's highest sample (NaN until first asked). */
-    private final int[] blockRows = new int[LEVELS], blockCols = new int[LEVELS];
-    private final float[][] blockMaxima = new float[LEVELS][];
+    private final int[] blockRows, blockCols;
+    private final float[][] blockMaxima;
+
+    /**
+     * A maximum pyramid and the samples it was made from: per level, each block's highest sample
+     * (NaN until first asked; concurrent fills store the same values).
+     */
+    private record Pyramid(Mosaic.SampleIdentity samples, float[][] blockMaxima) {
+        static Pyramid of(Mosaic mosaic) {
+            float[][] maxima = new float[LEVELS][];
+            for (int level = 0; level < LEVELS; level++) {
+                maxima[level] = new float[((mosaic.rows() - 1) / BLOCK_CELLS[level] + 1) * ((mosaic.cols() - 1) / BLOCK_CELLS[level] + 1)];
+                java.util.Arrays.fill(maxima[level], Float.NaN);
+            }
+            return new Pyramid(mosaic.sampleIdentity(), maxima);
+        }
+    }
+
+    /** The last pyramid made, for the next probe over the same samples. */
+    private static final java.util.concurrent.atomic.AtomicReference<Pyramid> LAST_PYRAMID =
+            new java.util.concurrent.atomic.AtomicReference<>();
+
+    /** The kept pyramid when it was made from {@code mosaic}'s samples, else a new one (then kept). */
+    static float[][] pyramidFor(Mosaic mosaic) {
+        Pyramid last = LAST_PYRAMID.get();
+        if (last != null && last.samples().matches(mosaic)) {
+            return last.blockMaxima();
+        }
+        Pyramid made = Pyramid.of(mosaic);
+        LAST_PYRAMID.set(made);
+        return made.blockMaxima();
+    }
     /** The reference's vertex placement, for the final intersection with the drawn triangles. */
     private final ReferenceRenderer.Surface surface;
 
@@ -68,11 +101,12 @@ public final class TerrainRayProbe implements RayProbe {
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
         double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree();
         this.cellStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
+        this.blockMaxima = pyramidFor(mosaic);
+        this.blockRows = new int[LEVELS];
+        this.blockCols = new int[LEVELS];
         for (int level = 0; level < LEVELS; level++) {
             blockRows[level] = (mosaic.rows() - 1) / BLOCK_CELLS[level] + 1;
             blockCols[level] = (mosaic.cols() - 1) / BLOCK_CELLS[level] + 1;
-            blockMaxima[level] = new float[blockRows[level] * blockCols[level]];
-            java.util.Arrays.fill(blockMaxima[level], Float.NaN);
         }
     }
 

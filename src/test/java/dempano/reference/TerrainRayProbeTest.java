@@ -1,6 +1,8 @@
 package dempano.reference;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dempano.Synthetic;
@@ -89,6 +91,32 @@ class TerrainRayProbeTest {
         assertEquals(crestMetres, fine, 200, "the crest is met");
         // On the drawn (planar) triangles, which stand within millimetres of the interpolated heights.
         assertEquals(0, probe.clearance(e, n, u, fine), 0.02, "on the surface");
+    }
+
+    @Test
+    void aKeptMaximumPyramidServesOnlyTheSameTilesAndNeverHidesAChangedOne() {
+        // The crest scene of findsACrestOneSampleRowWide, first without the crest: a probe over the plain
+        // plane fills the pyramid blocks along the ray with 500 m. Then the same tile grid with the crest
+        // tile: a pyramid served stale (500 m) would prove the ray above the 800 m crest and step over it.
+        double crestLat = 46.5 + 3000 / 600.0 / 100;
+        TileSelection where = TileSelection.around(46.5, 8.5, 30_000);
+        dempano.dem.DemSource plain = Synthetic.dem((lat, lon) -> 500, 46, 8, 1, 1);
+        Mosaic flat = Mosaic.of(plain, where, MissingTilePolicy.AUTO);
+        Mosaic flatAgain = Mosaic.of(plain, where, MissingTilePolicy.AUTO); // the same tile objects
+        Mosaic crested = Mosaic.of(Synthetic.dem((lat, lon) -> Math.abs(lat - crestLat) < 1e-6 ? 800 : 500, 46, 8, 1, 1),
+                where, MissingTilePolicy.AUTO);
+        double crestMetres = 0.05 * Math.PI / 180 * 6_367_000;
+        double el = Math.atan2(-150, crestMetres);
+        double e = 0, n = Math.cos(el), u = Math.sin(el);
+        TerrainRayProbe overFlat = new TerrainRayProbe(flat, Viewpoint.onDem(flat, 46.5, 8.5, 300, 0), new Refraction(0), 30_000);
+        double plane = overFlat.firstHitMetres(e, u, -n, 4700, 20_000);
+        // The ray drops 300 m to the plane in 11.1 km (a little more with the earth's curvature), far behind the crest.
+        assertTrue(plane > 11_000 && plane < 12_500, "the plain plane is met at " + plane + " m");
+        assertSame(TerrainRayProbe.pyramidFor(flat), TerrainRayProbe.pyramidFor(flatAgain), "same tiles: the pyramid is kept");
+        TerrainRayProbe overCrest = new TerrainRayProbe(crested, Viewpoint.onDem(crested, 46.5, 8.5, 300, 0), new Refraction(0),
+                30_000);
+        assertEquals(crestMetres, overCrest.firstHitMetres(e, u, -n, 4700, 20_000), 200, "the changed tile's crest is met");
+        assertNotSame(TerrainRayProbe.pyramidFor(flat), TerrainRayProbe.pyramidFor(crested), "other tiles: another pyramid");
     }
 
     /**
