@@ -45,6 +45,8 @@ public final class OrientationReport {
     static final int PHOTO_W = 480, PHOTO_H = 320;
     static final double RANGE_METRES = 50_000;
     static final double REFERENCE_PPD = 20, ESTIMATOR_PPD = 10;
+    /** Whether the fine stage against camera renders runs (system property dempano.orient.fine, default true). */
+    static final boolean FINE = Boolean.parseBoolean(System.getProperty("dempano.orient.fine", "true"));
 
     record Scene(String name, String description, double latDeg, double lonDeg) {
     }
@@ -60,7 +62,7 @@ public final class OrientationReport {
             new Scene("crimea", "Crimean Mountains west of Ai-Petri (N44E033)", 44.46, 33.93));
 
     record Row(String scene, int photo, SyntheticPhoto.Step step, double headingDeg, double pitchDeg, double rollDeg,
-               double hfovDeg, OrientationEstimate est, double seconds) {
+               double hfovDeg, OrientationEstimate est, double seconds, double truthScore) {
         double headingError() {
             double d = Math.abs(((est.headingDeg() - headingDeg) % 360 + 360) % 360);
             return Math.min(d, 360 - d);
@@ -190,14 +192,23 @@ public final class OrientationReport {
                         OrientationEstimate e;
                         try {
                             e = OrientationEstimator.estimate(sky, PhotoEdges.extract(photo, sky), profile, field,
-                                    OrientationPriors.NONE);
+                                    OrientationPriors.NONE, FINE ? dempano.orient.PhotoOrientation.cameraSkyline(gl,
+                                            base.withPixelsPerDegree(ESTIMATOR_PPD)) : null);
                         } catch (IllegalArgumentException ex) {
                             e = new OrientationEstimate(Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, 0, 1,
                                     Double.NaN, Double.NaN, Double.NaN, true, 0, 0);
                         }
                         double secs = (System.nanoTime() - t1) / 1e9;
+                        double truthScore = Double.NaN;
+                        try {
+                            truthScore = OrientationEstimator.refinedScoreFrom(sky, PhotoEdges.extract(photo, sky), profile,
+                                    field, truth, hfov, FINE ? dempano.orient.PhotoOrientation.cameraSkyline(gl,
+                                            base.withPixelsPerDegree(ESTIMATOR_PPD)) : null);
+                        } catch (IllegalArgumentException ex) {
+                            // too little skyline: no score
+                        }
                         Row row = new Row(scene.name(), rows.size() / SyntheticPhoto.Step.values().length, step, heading,
-                                pitch, roll, hfov, e, secs);
+                                pitch, roll, hfov, e, secs, truthScore);
                         rows.add(row);
                         if (p == 0 && s < 4 && Double.isFinite(e.headingDeg())) {
                             examples.add(OrientationOverlay.draw(photo, sky, profile, e));
@@ -319,13 +330,13 @@ public final class OrientationReport {
 
     static void writeCsv(List<Row> rows, Path file) throws IOException {
         StringBuilder b = new StringBuilder("scene,photo,step,heading_deg,pitch_deg,roll_deg,hfov_deg,est_heading_deg,"
-                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds\n");
+                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds,truth_score\n");
         for (Row r : rows) {
             OrientationEstimate e = r.est();
-            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f%n",
+            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f,%.4f%n",
                     r.scene(), r.photo(), r.step().name().toLowerCase(Locale.ROOT), r.headingDeg(), r.pitchDeg(), r.rollDeg(),
                     r.hfovDeg(), e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), r.headingError(), e.residualPx(),
-                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds()));
+                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds(), r.truthScore()));
         }
         Files.writeString(file, b.toString());
     }
