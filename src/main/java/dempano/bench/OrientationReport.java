@@ -63,7 +63,8 @@ public final class OrientationReport {
             new Scene("crimea", "Crimean Mountains west of Ai-Petri (N44E033)", 44.46, 33.93));
 
     record Row(String scene, int photo, SyntheticPhoto.Step step, double headingDeg, double pitchDeg, double rollDeg,
-               double hfovDeg, OrientationEstimate est, double seconds, double cpuSeconds, double truthScore) {
+               double hfovDeg, OrientationEstimate est, double seconds, double cpuSeconds, double truthScore,
+               double skylineMetres) {
         double headingError() {
             double d = Math.abs(((est.headingDeg() - headingDeg) % 360 + 360) % 360);
             return Math.min(d, 360 - d);
@@ -197,6 +198,7 @@ public final class OrientationReport {
                         continue;
                     }
                     CameraOrientation truth = new CameraOrientation(heading, pitch, roll);
+                    double skylineMetres = SyntheticPhoto.skylineDistanceMetres(ref, PHOTO_W, PHOTO_H, truth, hfov);
                     for (SyntheticPhoto.Step step : SyntheticPhoto.Step.values()) {
                         BufferedImage photo = SyntheticPhoto.render(ref, PHOTO_W, PHOTO_H, truth, hfov, step, photoSeed);
                         long t1 = System.nanoTime();
@@ -220,7 +222,7 @@ public final class OrientationReport {
                             // too little skyline: no score
                         }
                         Row row = new Row(scene.name(), photoIndex, step, heading,
-                                pitch, roll, hfov, e, secs, cpu, truthScore);
+                                pitch, roll, hfov, e, secs, cpu, truthScore, skylineMetres);
                         rows.add(row);
                         if (p == 0 && s < 4 && Double.isFinite(e.headingDeg())) {
                             examples.add(OrientationOverlay.draw(photo, sky, profile, e));
@@ -367,13 +369,13 @@ public final class OrientationReport {
 
     static void writeCsv(List<Row> rows, Path file) throws IOException {
         StringBuilder b = new StringBuilder("scene,photo,step,heading_deg,pitch_deg,roll_deg,hfov_deg,est_heading_deg,"
-                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds,cpu_seconds,truth_score\n");
+                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds,cpu_seconds,truth_score,skyline_km\n");
         for (Row r : rows) {
             OrientationEstimate e = r.est();
-            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f,%.3f,%.4f%n",
+            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f,%.3f,%.4f,%.2f%n",
                     r.scene(), r.photo(), r.step().name().toLowerCase(Locale.ROOT), r.headingDeg(), r.pitchDeg(), r.rollDeg(),
                     r.hfovDeg(), e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), r.headingError(), e.residualPx(),
-                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds(), r.cpuSeconds(), r.truthScore()));
+                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds(), r.cpuSeconds(), r.truthScore(), r.skylineMetres() / 1000));
         }
         Files.writeString(file, b.toString());
     }
