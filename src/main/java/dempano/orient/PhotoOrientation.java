@@ -97,7 +97,7 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         priors = roll ? priors : priors.withRollDeg(known[2]);
         priors = hfov ? priors : priors.withHfovRangeDeg(known[3], known[3]);
         OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(photo, sky), profile,
-                SilhouetteField.of(pano), priors, cameraSkyline(renderer, settings));
+                SilhouetteField.of(pano), priors);
         return new Result(e, OrientationOverlay.draw(photo, sky, profile, e));
     }
 

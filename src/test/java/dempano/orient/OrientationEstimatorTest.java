@@ -126,7 +126,7 @@ class OrientationEstimatorTest {
     }
 
     @Test
-    void theFineStageOnCameraRendersRecoversWhatThePanoramasRowsHide() {
+    void theFineStageOnCameraRendersMatchesTheTruePoseToAHundredthOfADegree() {
         // The panorama's skyline in 0.1° rows (10 px/°), as rendered; a 20° lens makes a row 2.4 photo pixels.
         HorizonProfile profile = SyntheticSkyline.renderedProfile(SyntheticSkyline::ridge, 10, 45);
         double[][] poses = {{123.4, 4, -3, 20}, {301.7, -2, 2.5, 30}, {47.9, 6, 1.5, 24}};
