@@ -141,6 +141,32 @@ final class SyntheticPhoto {
         return r >= g.heightPx() ? 0 : ref.distanceMetres(c, r);
     }
 
+    /**
+     * Median distance of the skyline's terrain over the photo's columns (every 4th), metres: per column, the distance
+     * of the first terrain pixel from the top. A near skyline (a slope the camera stands on) is a smooth line with
+     * nothing to match; columns without terrain are left out; NaN when none has any.
+     */
+    static double skylineDistanceMetres(Panorama ref, int w, int h, CameraOrientation o, double hfovDeg) {
+        CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
+        java.util.List<Double> d = new java.util.ArrayList<>();
+        double[] ray = new double[3];
+        for (int i = 0; i < w; i += 4) {
+            for (int j = 0; j < h; j++) {
+                view.rayOf(i, j, ray);
+                double v = sample(ref, ray);
+                if (Double.isFinite(v)) {
+                    d.add(v);
+                    break;
+                }
+            }
+        }
+        if (d.isEmpty()) {
+            return Double.NaN;
+        }
+        java.util.Collections.sort(d);
+        return d.get(d.size() / 2);
+    }
+
     /** Foreground shapes over 30 % of the columns (3 of 10 slots), reaching 8–45 px above the skyline. */
     private static void occluders(BufferedImage img, int[] skyline, Random rnd) {
         int w = img.getWidth(), h = img.getHeight();

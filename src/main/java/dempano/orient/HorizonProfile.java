@@ -47,6 +47,63 @@ public final class HorizonProfile {
         return new HorizonProfile(el, geometry.pixelsPerDegree());
     }
 
+    /**
+     * The skyline of a camera render as a profile over azimuth: per rendered column, the top edge of its topmost
+     * finite-distance pixel (row r's top edge lies at y = r − 0.5, pixel centres on integers), turned into azimuth
+     * and elevation by the render's own rays, then interpolated linearly onto profile columns of
+     * {@code pixelsPerDegree}. Columns whose top row is already terrain (the skyline above the frame) or that show
+     * no terrain are unknown, and so is every azimuth outside the render: NaN there.
+     *
+     * @param distanceMetres  the render's distances, row-major, row 0 on top, sky +∞ or NaN
+     * @param view            the render's pixel grid and orientation
+     * @param pixelsPerDegree the profile's resolution; 360 × it must be a whole number of columns
+     */
+    public static HorizonProfile ofCamera(float[] distanceMetres, dempano.camera.TargetImage view, double pixelsPerDegree) {
+        int w = view.widthPx(), h = view.heightPx();
+        if (distanceMetres.length != w * h) {
+            throw new IllegalArgumentException("a camera skyline needs width × height distances, got "
+                    + distanceMetres.length + " for " + w + " × " + h);
+        }
+        double[] az = new double[w], el = new double[w], ray = new double[3];
+        for (int c = 0; c < w; c++) {
+            az[c] = Double.NaN;
+            el[c] = Double.NaN;
+            int top = -1;
+            for (int r = 0; r < h; r++) {
+                if (Float.isFinite(distanceMetres[r * w + c])) {
+                    top = r;
+                    break;
+                }
+            }
+            if (top <= 0) {
+                continue;
+            }
+            view.rayOf(c, top - 0.5, ray);
+            az[c] = Math.toDegrees(Math.atan2(ray[0], ray[1]));
+            el[c] = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
+        }
+        int n = (int) Math.round(360 * pixelsPerDegree);
+        double ppd = n / 360.0;
+        double[] out = new double[n];
+        java.util.Arrays.fill(out, Double.NaN);
+        for (int c = 0; c + 1 < w; c++) {
+            if (Double.isNaN(el[c]) || Double.isNaN(el[c + 1])) {
+                continue;
+            }
+            double a0 = az[c], a1 = az[c] + (((az[c + 1] - az[c]) % 360 + 540) % 360 - 180);
+            double lo = Math.min(a0, a1), hi = Math.max(a0, a1);
+            if (hi - lo > 5) {
+                continue;
+            }
+            // Profile column k's centre is at azimuth (k + 0.5)/ppd.
+            for (long k = (long) Math.ceil(lo * ppd - 0.5); (k + 0.5) / ppd <= hi; k++) {
+                double a = (k + 0.5) / ppd, t = hi > lo ? (a - a0) / (a1 - a0) : 0;
+                out[(int) Math.floorMod(k, (long) n)] = el[c] + t * (el[c + 1] - el[c]);
+            }
+        }
+        return new HorizonProfile(out, ppd);
+    }
+
     public double pixelsPerDegree() {
         return pixelsPerDegree;
     }

@@ -101,6 +101,21 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         return new Result(e, OrientationOverlay.draw(photo, sky, profile, e));
     }
 
+    /**
+     * The fine stage's camera renders: distances only (no colour, no exact distances) with the settings' position,
+     * range and refraction, each turned into a skyline profile at the render's own resolution.
+     */
+    public static CameraSkyline cameraSkyline(PanoramaRenderer renderer, PanoramaRequest settings) {
+        PanoramaRequest s = settings.withColour(false).withDistance(true).withExactDistances(false)
+                .withLayers(java.util.Set.of());
+        return (k, o) -> {
+            dempano.camera.CameraPose pose = new dempano.camera.CameraPose(s.latDeg(), s.lonDeg(), s.offsetMetres(),
+                    s.altitudeMetres(), s.eyeHeightMetres(), o);
+            dempano.CameraImage img = renderer.render(new dempano.CameraRequest(k, pose, s));
+            return HorizonProfile.ofCamera(img.distanceArray(), img.view(), OrientationEstimator.finePixelsPerDegree(k));
+        };
+    }
+
     /** An estimate and its overlay (rendered skyline in red over the photo's skyline in yellow). */
     public record Result(OrientationEstimate estimate, BufferedImage overlay) {
         /** The provenance line of the estimate. */

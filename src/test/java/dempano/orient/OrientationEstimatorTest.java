@@ -124,4 +124,29 @@ class OrientationEstimatorTest {
         assertTrue(e.edgeScore() < 0.3, e.summary());
         assertTrue(e.marginScore() > 0.1, e.summary());
     }
+
+    @Test
+    void theFineStageOnCameraRendersMatchesTheTruePoseToAHundredthOfADegree() {
+        // The panorama's skyline in 0.1° rows (10 px/°), as rendered; a 20° lens makes a row 2.4 photo pixels.
+        HorizonProfile profile = SyntheticSkyline.renderedProfile(SyntheticSkyline::ridge, 10, 45);
+        double[][] poses = {{123.4, 4, -3, 20}, {301.7, -2, 2.5, 30}, {47.9, 6, 1.5, 24}};
+        double coarseWorst = 0, fineWorst = 0;
+        for (double[] p : poses) {
+            Skyline sky = SyntheticSkyline.project(SyntheticSkyline::ridge, W, H, new CameraOrientation(p[0], p[1], p[2]), p[3]);
+            OrientationEstimate coarse = OrientationEstimator.estimate(sky, PhotoEdges.NONE, profile, null, OrientationPriors.NONE);
+            OrientationEstimate fine = OrientationEstimator.estimate(sky, PhotoEdges.NONE, profile, null, OrientationPriors.NONE,
+                    SyntheticSkyline.camera(SyntheticSkyline::ridge));
+            String what = fine.summary() + " (panorama only: " + coarse.summary() + ") for truth " + java.util.Arrays.toString(p);
+            coarseWorst = Math.max(coarseWorst, headingError(coarse, p[0]));
+            fineWorst = Math.max(fineWorst, headingError(fine, p[0]));
+            // Renders at twice the photo's pixels per degree: a quarter of a photo pixel is 0.01° at 20°.
+            assertTrue(headingError(fine, p[0]) < 0.01, what);
+            assertEquals(p[1], fine.pitchDeg(), 0.01, what);
+            assertEquals(p[2], fine.rollDeg(), 0.03, what);
+            assertEquals(p[3], fine.hfovDeg(), 0.001 * p[3], what);
+            assertTrue(fine.residualPx() < 0.3, what);
+            assertFalse(fine.unsure(), what);
+        }
+        System.out.printf(java.util.Locale.ROOT, "worst heading error: panorama only %.4f°, fine stage %.4f°%n", coarseWorst, fineWorst);
+    }
 }

@@ -26,6 +26,42 @@ final class SyntheticSkyline {
         return new HorizonProfile(el, ppd);
     }
 
+    /**
+     * A panorama's skyline profile of the horizon as the renderer gives it: per column, the top edge of the first
+     * row (rows {@code 1/ppd} apart from {@code topDeg} down) whose centre lies below the horizon at the column centre.
+     */
+    static HorizonProfile renderedProfile(DoubleUnaryOperator horizon, double ppd, double topDeg) {
+        int n = (int) Math.round(360 * ppd);
+        double[] el = new double[n];
+        for (int c = 0; c < n; c++) {
+            double e = horizon.applyAsDouble((c + 0.5) / ppd);
+            int r = (int) Math.ceil((topDeg - e) * ppd - 0.5);
+            el[c] = topDeg - r / ppd;
+        }
+        return new HorizonProfile(el, ppd);
+    }
+
+    /** A camera render's distance map of the horizon: 1000 m at pixel centres below it, +∞ (sky) above. */
+    static float[] distanceMap(DoubleUnaryOperator horizon, CameraView view) {
+        int w = view.widthPx(), h = view.heightPx();
+        float[] d = new float[w * h];
+        double[] ray = new double[3];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                d[y * w + x] = above(view, horizon, x, y, ray) ? Float.POSITIVE_INFINITY : 1000f;
+            }
+        }
+        return d;
+    }
+
+    /** The fine stage's camera renders of the horizon, through {@link HorizonProfile#ofCamera}. */
+    static CameraSkyline camera(DoubleUnaryOperator horizon) {
+        return (k, o) -> {
+            CameraView view = new CameraView(k, o);
+            return HorizonProfile.ofCamera(distanceMap(horizon, view), view, OrientationEstimator.finePixelsPerDegree(k));
+        };
+    }
+
     /** The exact skyline row per column for a camera (bisection on the row), weight 1. */
     static Skyline project(DoubleUnaryOperator horizon, int w, int h, CameraOrientation o, double hfovDeg) {
         CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
