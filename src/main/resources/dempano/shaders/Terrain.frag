@@ -2,13 +2,14 @@ in vec3 vPosition;
 in vec3 vNormal;
 in float vElevation;
 flat in int vFlags;
+flat in int vTriangle;
 uniform vec3 g_CameraPosition;
 uniform float m_RangeMetres;
 uniform float m_HazeMetres;
 uniform vec3 m_SunDirection;
-uniform int m_GeometryId;
+uniform int m_TriangleBase;
 layout(location = 0) out vec4 outColour;
-layout(location = 1) out vec4 outRange;
+layout(location = 1) out uvec2 outRange;
 
 // Hypsometric tint: lowland green, forest, pasture, rock, snow.
 vec3 tint(float h) {
@@ -29,8 +30,14 @@ void main() {
     }
     // The camera is at the origin for panoramas; the fly-through moves it.
     float range = length(vPosition - g_CameraPosition);
-    // The triangle seen: geometry and primitive ids, exact as floats below 2^24 (checked on the CPU).
-    outRange = vec4(range, float(m_GeometryId), float(gl_PrimitiveID), 1.0);
+    // The range's float bits, and the triangle seen: the scene's number of the geometry's first
+    // triangle plus the triangle's number in the geometry, from the flat attribute its own
+    // provoking vertex carries (ProvokingVertices; gl_PrimitiveID slows llvmpipe down).
+#ifdef PRIMITIVE_ID_CHECK
+    outRange = uvec2(floatBitsToUint(range), uint(m_TriangleBase + gl_PrimitiveID));
+#else
+    outRange = uvec2(floatBitsToUint(range), uint(m_TriangleBase + vTriangle));
+#endif
 #ifdef DISTANCE_ONLY
     outColour = vec4(0.0);
 #else
