@@ -585,7 +585,7 @@ public final class TerrainBuilder {
      * convex hull holds the patch ({@code hull}, 24 doubles).
      */
     record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
-                     float[] provoked, double[] hull) {
+                     double[] hull) {
 
         int vertexCount() {
             return high.length / 3;
@@ -600,19 +600,12 @@ public final class TerrainBuilder {
             }
             FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), low = BufferUtils.createFloatBuffer(nv * 3);
             FloatBuffer up = BufferUtils.createFloatBuffer(nv * 4), nor = BufferUtils.createFloatBuffer(nv * 3);
-            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 2), triangle = BufferUtils.createFloatBuffer(nv);
-            if (ni / 3 > ProvokingVertices.MAX_TRIANGLES) {
-                throw new IllegalStateException(ni / 3 + " triangles in one geometry: its triangle numbers would not be exact floats");
-            }
+            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 2);
             boolean shortIndices = nv <= 65536;
             ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
             IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
-            int base = 0, triangleBase = 0;
+            int base = 0;
             for (PatchMesh m : parts) {
-                for (float t : m.provoked) {
-                    triangle.put(t < 0 ? -1 : t + triangleBase);
-                }
-                triangleBase += m.indices.length / 3;
                 pos.put(m.high);
                 low.put(m.low);
                 up.put(m.up);
@@ -634,7 +627,6 @@ public final class TerrainBuilder {
             mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
             mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
-            mesh.setBuffer(VertexBuffer.Type.TexCoord4, 1, triangle.flip());
             if (shortIndices) {
                 mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
             } else {
@@ -799,13 +791,6 @@ public final class TerrainBuilder {
                 }
                 twin += cs;
             }
-            ProvokingVertices pv = ProvokingVertices.assign(indices, n);
-            high = pv.copy(high, 3);
-            low = pv.copy(low, 3);
-            up = pv.copy(up, 4);
-            normals = pv.copy(normals, 3);
-            elevations = pv.copy(elevations, 2);
-            n = pv.vertexCount();
             // The prism over the patch's corner feet from its lowest to its highest vertex bounds it
             // (up to the earth's curvature between corners, which the bounds' margin covers).
             float lowest = Float.POSITIVE_INFINITY, highest = Float.NEGATIVE_INFINITY;
@@ -823,7 +808,7 @@ public final class TerrainBuilder {
                     hull[6 * q + 3 + a] = footA + highest * (double) up[4 * k + a];
                 }
             }
-            return new PatchMesh(high, low, up, normals, elevations, pv.indices(), pv.provokedTriangle(), hull);
+            return new PatchMesh(high, low, up, normals, elevations, indices, hull);
         }
 
         /** A double as float high part and float remainder. */

@@ -2,7 +2,6 @@ in vec3 vPosition;
 in vec3 vNormal;
 in float vElevation;
 flat in int vFlags;
-flat in int vTriangle;
 uniform vec3 g_CameraPosition;
 uniform float m_RangeMetres;
 uniform float m_HazeMetres;
@@ -31,13 +30,10 @@ void main() {
     // The camera is at the origin for panoramas; the fly-through moves it.
     float range = length(vPosition - g_CameraPosition);
     // The range's float bits, and the triangle seen: the scene's number of the geometry's first
-    // triangle plus the triangle's number in the geometry, from the flat attribute its own
-    // provoking vertex carries (ProvokingVertices; gl_PrimitiveID slows llvmpipe down).
-#ifdef PRIMITIVE_ID_CHECK
+    // triangle plus the triangle's number in the geometry. (A flat per-vertex triangle number
+    // instead of gl_PrimitiveID drew 0.2 s faster at srtm3-150km on llvmpipe, but its vertex
+    // copies cost as much in mesh building and 0.8 GB of peak memory: measured, rejected.)
     outRange = uvec2(floatBitsToUint(range), uint(m_TriangleBase + gl_PrimitiveID));
-#else
-    outRange = uvec2(floatBitsToUint(range), uint(m_TriangleBase + vTriangle));
-#endif
 #ifdef DISTANCE_ONLY
     outColour = vec4(0.0);
 #else

@@ -8,7 +8,6 @@ in vec3 inTexCoord2;     // ECEF, low part (double − high)
 in vec4 inTexCoord3;     // xyz: ellipsoid normal (ECEF); w: height above the ellipsoid as placed, metres
 in vec3 inNormal;        // surface normal (ECEF), for shading
 in vec2 inTexCoord;      // x: terrain elevation, metres; y: debug flags (1 filled void, 2 missing tile, 4 tile seam)
-in float inTexCoord4;    // the triangle this vertex provokes (its number in the geometry), −1 none (ProvokingVertices)
 uniform mat4 g_ViewProjectionMatrix;
 uniform vec3 m_EyeHigh;
 uniform vec3 m_EyeLow;
@@ -19,7 +18,6 @@ uniform float m_MeanRadius;
 out vec3 vNormal;
 out float vElevation;
 flat out int vFlags;      // not interpolated: a triangle takes its provoking vertex's flags
-flat out int vTriangle;   // which triangle: each triangle's provoking vertex is its own
 
 void main() {
     precise vec3 rel = (inPosition - m_EyeHigh) + (inTexCoord2 - m_EyeLow);
@@ -31,6 +29,5 @@ void main() {
     vNormal = m_EcefToEye * inNormal;
     vElevation = inTexCoord.x;
     vFlags = int(inTexCoord.y + 0.5);
-    vTriangle = int(inTexCoord4);
     gl_Position = g_ViewProjectionMatrix * vec4(vPosition, 1.0);
 }
