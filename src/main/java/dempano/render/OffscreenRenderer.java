@@ -23,6 +23,7 @@ import dempano.panorama.ViewLayout;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
@@ -174,8 +175,8 @@ public final class OffscreenRenderer {
      *                    material's {@code DistanceOnly} so the shader skips shading)
      * @param rangeTarget captures' depth is the shader's range target whatever the mode (the mode
      *                    then only chooses the projection and depth test); SHADER_RANGE needs it
-     * @param surfaces    also read which triangle each sample sees ({@link ViewCapture#geometryIds()},
-     *                    {@link ViewCapture#primitiveIds()}), for exact per-pixel distances
+     * @param surfaces    also read which triangle each sample sees ({@link ViewCapture#triangleIds()}),
+     *                    for exact per-pixel distances
      * @param release     free the scene's GL buffers afterwards (for single-use scenes)
      */
     public record ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
@@ -420,8 +421,8 @@ public final class OffscreenRenderer {
             }
             fb = new FrameBuffer(w, h, 1);
             fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RGBA8));
-            // Range in metres, and which triangle: the geometry id and gl_PrimitiveID as exact float integers.
-            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RGBA32F));
+            // The range in metres (a float's bits) and which triangle (its number in the scene).
+            fb.addColorTarget(FrameBuffer.FrameBufferTarget.newTarget(Image.Format.RG32UI));
             fb.setDepthTarget(FrameBuffer.FrameBufferTarget.newTarget(reversed ? Image.Format.Depth32F : Image.Format.Depth24));
             fb.setMultiTarget(true);
             fbWidth = w;
@@ -469,8 +470,8 @@ public final class OffscreenRenderer {
             ViewCapture[] out = new ViewCapture[layout.views()];
             ByteBuffer colour = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder());
             FloatBuffer depth = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder()).asFloatBuffer();
-            FloatBuffer rangeRgba = surfaces
-                    ? ByteBuffer.allocateDirect(w * h * 16).order(ByteOrder.nativeOrder()).asFloatBuffer() : null;
+            IntBuffer rangeAndTriangle = surfaces
+                    ? ByteBuffer.allocateDirect(w * h * 8).order(ByteOrder.nativeOrder()).asIntBuffer() : null;
             try {
                 for (int k = 0; k < layout.views(); k++) {
                     if (layout.ring()) {
@@ -493,7 +494,7 @@ public final class OffscreenRenderer {
                     GL11.glDepthMask(true);
                     GL11.glColorMask(true, true, true, true);
                     GL30.glClearBufferfv(GL11.GL_COLOR, 0, OffscreenRenderer.SKY_RGBA);
-                    GL30.glClearBufferfv(GL11.GL_COLOR, 1, new float[] {0, 0, 0, 0});
+                    GL30.glClearBufferuiv(GL11.GL_COLOR, 1, new int[] {0, 0, 0, 0});
                     GL30.glClearBufferfv(GL11.GL_DEPTH, 0, new float[] {reversed ? 0f : 1f});
                     long t0 = System.nanoTime();
                     renderManager.render(0, false);
@@ -510,29 +511,27 @@ public final class OffscreenRenderer {
                         colour.get(rgba);
                     }
                     float[] d = new float[w * h];
-                    int[] geometryIds = null, primitiveIds = null;
+                    int[] triangleIds = null;
                     if (surfaces) {
-                        // One read of the whole range target: range, geometry id, primitive id.
+                        // One read of the whole range target: the range's bits and the triangle.
                         GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
-                        rangeRgba.clear();
-                        GL11.glReadPixels(0, 0, w, h, GL11.GL_RGBA, GL11.GL_FLOAT, rangeRgba);
-                        geometryIds = new int[w * h];
-                        primitiveIds = new int[w * h];
-                        for (int i = 0, o = 0; i < w * h; i++, o += 4) {
-                            float range = rangeRgba.get(o);
+                        rangeAndTriangle.clear();
+                        GL11.glReadPixels(0, 0, w, h, GL30.GL_RG_INTEGER, GL11.GL_UNSIGNED_INT, rangeAndTriangle);
+                        triangleIds = new int[w * h];
+                        for (int i = 0, o = 0; i < w * h; i++, o += 2) {
+                            float range = Float.intBitsToFloat(rangeAndTriangle.get(o));
                             if (readRangeTarget) {
                                 d[i] = range;
                             }
-                            boolean drawn = range > 0;
-                            geometryIds[i] = drawn ? (int) rangeRgba.get(o + 1) : -1;
-                            primitiveIds[i] = drawn ? (int) rangeRgba.get(o + 2) : -1;
+                            triangleIds[i] = range > 0 ? rangeAndTriangle.get(o + 1) : -1;
                         }
                     }
                     if (!readRangeTarget || !surfaces) {
                         depth.clear();
                         if (readRangeTarget) {
+                            // The red channel alone: the range's bits.
                             GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
-                            GL11.glReadPixels(0, 0, w, h, GL11.GL_RED, GL11.GL_FLOAT, depth);
+                            GL11.glReadPixels(0, 0, w, h, GL30.GL_RED_INTEGER, GL11.GL_UNSIGNED_INT, depth);
                         } else {
                             GL11.glReadPixels(0, 0, w, h, GL11.GL_DEPTH_COMPONENT, GL11.GL_FLOAT, depth);
                         }
@@ -543,7 +542,7 @@ public final class OffscreenRenderer {
                     if (err != GL11.GL_NO_ERROR) {
                         throw new IllegalStateException("OpenGL error 0x" + Integer.toHexString(err) + " rendering view " + k);
                     }
-                    out[k] = new ViewCapture(k, rgba, d, geometryIds, primitiveIds);
+                    out[k] = new ViewCapture(k, rgba, d, triangleIds);
                     nanos[0] += t1 - t0;
                     nanos[1] += System.nanoTime() - t1;
                 }

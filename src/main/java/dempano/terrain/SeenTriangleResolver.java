@@ -12,8 +12,9 @@ import java.util.List;
 import java.util.stream.IntStream;
 
 /**
- * Turns the views' per-sample surface identities (geometry id, primitive id; see
- * {@link ViewCapture#geometryIds()}) into {@link SeenTriangles}: each distinct triangle seen, its
+ * Turns the views' per-sample surface identities (the scene's triangle numbers; see
+ * {@link ViewCapture#triangleIds()} and {@link TerrainBuilder#triangleBases}) into
+ * {@link SeenTriangles}: each distinct triangle seen, its
  * vertices read from the geometry's own buffers (ECEF double-single, exact to micrometres) and
  * placed as the shader places them, in double precision ({@link EyePlacement#place}). Must run while
  * the geometries' buffers are alive (before they are released).
@@ -23,7 +24,7 @@ public final class SeenTriangleResolver {
     }
 
     /**
-     * @param drawn       the scene's geometries, indexed by their {@link TerrainBuilder#GEOMETRY_ID}
+     * @param drawn       the scene's geometries, in the order of their {@link TerrainBuilder#TRIANGLE_BASE}
      * @param captures    views read with surfaces
      * @param placement   the eye the scene was drawn for
      * @param rangeMetres the shader's range cut
@@ -31,31 +32,34 @@ public final class SeenTriangleResolver {
      */
     public static SeenTriangles resolve(List<Geometry> drawn, ViewCapture[] captures, EyePlacement placement,
                                         double rangeMetres) {
+        int[] bases = TerrainBuilder.triangleBases(drawn);
+        int total = bases[drawn.size()];
         int[][] compactOf = new int[drawn.size()][]; // per geometry: primitive → compact index, −1 unseen
-        int[] triangleCount = new int[drawn.size()];
-        for (int g = 0; g < drawn.size(); g++) {
-            triangleCount[g] = drawn.get(g).getMesh().getTriangleCount();
-        }
         int[][] triangleOfSample = new int[captures.length][];
         int[] seenGeometry = new int[1024], seenPrimitive = new int[1024];
         int seen = 0;
         for (int k = 0; k < captures.length; k++) {
             ViewCapture c = captures[k];
-            if (c.geometryIds() == null) {
+            if (c.triangleIds() == null) {
                 throw new IllegalArgumentException("view " + k + " was read without surface identities");
             }
-            int[] gids = c.geometryIds(), pids = c.primitiveIds();
-            int[] out = new int[gids.length];
-            for (int i = 0; i < gids.length; i++) {
-                int g = gids[i], p = pids[i];
+            int[] ids = c.triangleIds();
+            int[] out = new int[ids.length];
+            int g = 0; // the geometry of the previous sample: neighbours mostly share one
+            for (int i = 0; i < ids.length; i++) {
+                int id = ids[i];
                 // An id outside the scene (never expected) is treated as unknown, not trusted.
-                if (g < 0 || g >= compactOf.length || p < 0 || p >= triangleCount[g]) {
+                if (id < 0 || id >= total) {
                     out[i] = -1;
                     continue;
                 }
+                if (id < bases[g] || id >= bases[g + 1]) {
+                    g = geometryOf(bases, id);
+                }
+                int p = id - bases[g];
                 int[] map = compactOf[g];
                 if (map == null) {
-                    map = compactOf[g] = new int[triangleCount[g]];
+                    map = compactOf[g] = new int[bases[g + 1] - bases[g]];
                     Arrays.fill(map, -1);
                 }
                 int t = map[p];
@@ -110,6 +114,20 @@ public final class SeenTriangleResolver {
             }
         });
         return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
+    }
+
+    /** The geometry g with bases[g] ≤ id < bases[g + 1] (0 ≤ id < the total; empty geometries skipped). */
+    static int geometryOf(int[] bases, int id) {
+        int lo = 0, hi = bases.length - 2; // the answer lies in [lo, hi]
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (bases[mid] <= id) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo;
     }
 
     /** A mesh's buffers in the layout {@link TerrainBuilder} writes (read with absolute gets: thread-safe). */

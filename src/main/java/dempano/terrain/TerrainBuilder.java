@@ -66,16 +66,40 @@ public final class TerrainBuilder {
      * @param reusedPatches   patches whose geometry came from the {@link MeshCache}
      * @param transientParts  geometries made for this build only: release their buffers after drawing
      * @param evicted         geometries the mesh cache let go: release their buffers too
-     * @param drawn           every geometry of the scene, indexed by the {@link #GEOMETRY_ID} it carries
-     *                        (what the shader writes beside each sample's range)
+     * @param drawn           every geometry of the scene, in the order of the {@link #TRIANGLE_BASE}
+     *                        each carries (the shader writes that base plus the triangle's number
+     *                        in the geometry beside each sample's range; see {@link #triangleBases})
      */
     public record Terrain(Node root, long vertices, long triangles, int blocks, int patches, int[] patchesPerLevel,
                           int hiddenPatches, int reusedPatches, List<Geometry> transientParts, List<Geometry> evicted,
                           List<Geometry> drawn) {
     }
 
-    /** The material parameter, set per geometry as an override, that numbers the geometries of one build. */
-    public static final String GEOMETRY_ID = "GeometryId";
+    /**
+     * The material parameter, set per geometry as an override, that numbers the triangles of one
+     * build: the scene's number of the geometry's first triangle ({@link #triangleBases}).
+     */
+    public static final String TRIANGLE_BASE = "TriangleBase";
+
+    /**
+     * The scene's number of each drawn geometry's first triangle, and the total last: geometry g
+     * holds the scene's triangles bases[g] to bases[g + 1] − 1 (what {@link #TRIANGLE_BASE} carries).
+     *
+     * @throws IllegalStateException when the scene has 2^31 triangles or more
+     */
+    public static int[] triangleBases(List<Geometry> drawn) {
+        int[] bases = new int[drawn.size() + 1];
+        long total = 0;
+        for (int g = 0; g < drawn.size(); g++) {
+            bases[g] = (int) total;
+            total += drawn.get(g).getMesh().getTriangleCount();
+            if (total > Integer.MAX_VALUE) {
+                throw new IllegalStateException("more than 2^31 triangles in one scene");
+            }
+        }
+        bases[drawn.size()] = (int) total;
+        return bases;
+    }
 
     /**
      * Full resolution everywhere.
@@ -334,6 +358,12 @@ public final class TerrainBuilder {
             attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement, drawn);
             transientParts.add(patch);
         }
+        // Triangles numbered for this build (a cached geometry carries the numbers of its latest build).
+        int[] bases = triangleBases(drawn);
+        for (int g = 0; g < drawn.size(); g++) {
+            drawn.get(g).addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int,
+                    TRIANGLE_BASE, bases[g]));
+        }
         List<Geometry> evicted = meshes == null ? List.of() : meshes.trim(inUse);
         root.updateGeometricState();
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
@@ -349,9 +379,7 @@ public final class TerrainBuilder {
         if (material != null) {
             g.setMaterial(material);
         }
-        // Numbered for this build (a cached geometry carries the number of its latest build).
-        g.clearMatParamOverrides();
-        g.addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int, GEOMETRY_ID, drawn.size()));
+        g.clearMatParamOverrides(); // numbered once the scene is complete (build)
         drawn.add(g);
         g.setModelBound(placement.bound(hull));
         g.setUserData(EYE_BOUND, true);
