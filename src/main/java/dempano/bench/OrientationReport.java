@@ -214,7 +214,7 @@ public final class OrientationReport {
                                             base.withPixelsPerDegree(ESTIMATOR_PPD)) : null);
                         } catch (IllegalArgumentException ex) {
                             e = new OrientationEstimate(Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, 0, 1,
-                                    Double.NaN, Double.NaN, Double.NaN, true, 0, 0);
+                                    Double.NaN, null, Double.NaN, true, 0, 0);
                         }
                         double secs = (System.nanoTime() - t1) / 1e9, cpu = processCpuSeconds() - c1;
                         double truthScore = Double.NaN;

@@ -23,7 +23,8 @@ package dempano.orient;
  * @param edgeScore         mean truncated distance of the photo's inner edge points to the rendered depth edges,
  *                          over the truncation, [0, 1] (texture edges keep it well above 0); NaN when no edges were
  *                          matched
- * @param secondHeadingDeg  the best other heading, degrees; NaN when there was none (a pinned or narrow prior)
+ * @param second            the best other pose (heading more than {@link OrientationEstimator#DISTINCT_HEADING_DEG}
+ *                          away, refined as the best was); null when there was none (a pinned or narrow prior)
  * @param marginScore       second score − best score; NaN when there was no other heading
  * @param unsure            whether the match should not be trusted (see above)
  * @param samples           skyline samples used
@@ -31,13 +32,34 @@ package dempano.orient;
  */
 public record OrientationEstimate(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg,
                                   double residualPx, double inlierShare, double score, double edgeScore,
-                                  double secondHeadingDeg,
+                                  Pose second,
                                   double marginScore, boolean unsure, int samples, double seconds) {
+    /**
+     * A camera pose as the estimator fits it.
+     *
+     * @param headingDeg optical axis, degrees clockwise from true north
+     * @param pitchDeg   optical axis above the horizontal, degrees
+     * @param rollDeg    degrees, positive clockwise as the photographer sees it
+     * @param hfovDeg    horizontal field of view, degrees
+     */
+    public record Pose(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg) {
+    }
+
+    /** The estimated pose. */
+    public Pose pose() {
+        return new Pose(headingDeg, pitchDeg, rollDeg, hfovDeg);
+    }
+
+    /** The best other heading, degrees; NaN when there was none. */
+    public double secondHeadingDeg() {
+        return second == null ? Double.NaN : second.headingDeg();
+    }
+
     /** One line for a log. */
     public String summary() {
         return String.format(java.util.Locale.ROOT, "heading %.2f°, pitch %.2f°, roll %.2f°, hfov %.2f°;"
                         + " residual %.2f px, %.0f %% of %d skyline samples fit, edge score %.3f, margin %.3f over heading %.1f°%s",
                 headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, edgeScore, marginScore,
-                secondHeadingDeg, unsure ? " — UNSURE" : "");
+                secondHeadingDeg(), unsure ? " — UNSURE" : "");
     }
 }

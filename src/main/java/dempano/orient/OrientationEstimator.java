@@ -50,7 +50,7 @@ public final class OrientationEstimator {
     /** The unsure rule in words, for reports. */
     public static final String UNSURE_RULE = "UNSURE when the margin is below " + UNSURE_MARGIN + " or below "
             + UNSURE_MARGIN_PER_SCORE + " × the best score, or fewer than " + Math.round(100 * UNSURE_INLIER_SHARE)
-            + " % of the skyline samples fit. The margin threshold was calibrated on seed 1 (the largest margin of"
+            + " % of the skyline samples fit, or a free FOV ends on its search bound (3 % outside the prior). The margin threshold was calibrated on seed 1 (the largest margin of"
             + " an estimate more than 5° off was 0.091); the score term was added after a seed-2 estimate 21.6° off"
             + " passed the margin-only rule with margin 0.130 at score 0.58. Seeds 2 and 3 validate the rule"
             + " (`gradle orientationReport -Pphotos=30 -Pseed=2`, `-Pseed=3`).";
@@ -58,10 +58,15 @@ public final class OrientationEstimator {
     static final double COARSE_HEADING_STEP_DEG = 0.25;
     static final double COARSE_FOV_STEP = 0.015;
     static final int CANDIDATES = 6;
+    /**
+     * The coarse stage keeps its best headings per FOV bin of this width (ratio of largest to smallest FOV), so that
+     * the pool holds FOV-distinct poses: at 15°–100°, nine bins.
+     */
+    static final double FOV_BIN_RATIO = 1.25;
     /** Candidates refined when inner edges are matched too (the skyline alone ranks them less reliably). */
     static final int CANDIDATES_WITH_EDGES = 12;
-    /** With inner edges: this many coarse skyline optima are ranked by skyline and edge score together. */
-    static final int COARSE_POOL = 48;
+    /** With inner edges: this many coarse skyline optima per FOV bin are ranked by skyline and edge score together. */
+    static final int COARSE_POOL_PER_BIN = 16;
     /** Edge residual truncation when ranking coarse poses, photo pixels (before the scaling to panorama pixels). */
     static final double COARSE_EDGE_TRUNCATION_PX = 6;
     /** Weight of the inner-edge (chamfer) term relative to the skyline term. */
@@ -206,8 +211,8 @@ public final class OrientationEstimator {
         List<Hypothesis> candidates = priors.headingPinned()
                 ? List.of(new Hypothesis(priors.headingDeg(), orZero(priors.pitchDeg()), orZero(priors.rollDeg()),
                 Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg()), Double.NaN))
-                : rankWithEdges(coarse(coarse, w, h, profile, priors, target.hasEdges() ? COARSE_POOL : nCand),
-                target, w, h, profile, nCand);
+                : choose(rankWithEdges(coarse(coarse, w, h, profile, priors, target.hasEdges() ? COARSE_POOL_PER_BIN : nCand),
+                target, w, h, profile), nCand, priors);
         List<Hypothesis> refined = new ArrayList<>();
         for (Hypothesis c : candidates) {
             refined.add(refine(c, target, w, h, profile, priors));
@@ -268,10 +273,12 @@ public final class OrientationEstimator {
             edgeScore = c / (all.length - fine.size());
         }
         double margin = second == null ? Double.NaN : second.score() - best.score();
-        boolean unsure = isUnsure(inlierShare, best.score(), second == null ? Double.NaN : margin);
+        boolean unsure = isUnsure(inlierShare, best.score(), second == null ? Double.NaN : margin)
+                || onFovBound(best.hfovDeg(), priors);
         return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
                 inW > 0 ? Math.sqrt(sq / inW) : Double.NaN, inlierShare, best.score(), edgeScore,
-                second == null ? Double.NaN : normalize360(second.headingDeg()), margin, unsure, fine.size(),
+                second == null ? null : new OrientationEstimate.Pose(normalize360(second.headingDeg()), second.pitchDeg(),
+                        second.rollDeg(), second.hfovDeg()), margin, unsure, fine.size(),
                 (System.nanoTime() - t0) / 1e9);
     }
 
@@ -304,6 +311,25 @@ public final class OrientationEstimator {
     }
 
     /**
+     * Whether a free field of view ended on the refinement's bound (3 % outside the prior's range): the skyline
+     * asked for a FOV the search does not cover, so the pose is not a proper optimum.
+     */
+    static boolean onFovBound(double hfovDeg, OrientationPriors priors) {
+        if (priors.hfovPinned()) {
+            return false;
+        }
+        return hfovDeg <= fovLow(priors) * 1.001 || hfovDeg >= fovHigh(priors) * 0.999;
+    }
+
+    private static double fovLow(OrientationPriors priors) {
+        return priors.hfovMinDeg() * 0.97;
+    }
+
+    private static double fovHigh(OrientationPriors priors) {
+        return Math.min(179, priors.hfovMaxDeg() * 1.03);
+    }
+
+    /**
      * The unsure rule: fewer than {@link #UNSURE_INLIER_SHARE} of the skyline samples fit, or the margin to the best
      * other heading (NaN when there is none) is below {@link #UNSURE_MARGIN} or below {@link #UNSURE_MARGIN_PER_SCORE}
      * × the best score.
@@ -317,11 +343,11 @@ public final class OrientationEstimator {
 
     /**
      * Coarse hypotheses ranked by their skyline score plus {@link #EDGE_WEIGHT} × their edge score (truncation
-     * {@link #COARSE_EDGE_TRUNCATION_PX}); the best {@code keep}. Without edges, the first {@code keep} as they are.
+     * {@link #COARSE_EDGE_TRUNCATION_PX}), best first. Without edges, as they are.
      */
-    static List<Hypothesis> rankWithEdges(List<Hypothesis> coarse, Target t, int w, int h, HorizonProfile profile, int keep) {
+    static List<Hypothesis> rankWithEdges(List<Hypothesis> coarse, Target t, int w, int h, HorizonProfile profile) {
         if (!t.hasEdges()) {
-            return coarse.subList(0, Math.min(keep, coarse.size()));
+            return coarse;
         }
         List<Hypothesis> ranked = new ArrayList<>();
         int ns = t.sky().size();
@@ -336,7 +362,31 @@ public final class OrientationEstimator {
                     c.score() + EDGE_WEIGHT * e / (r.length - ns)));
         }
         ranked.sort(Comparator.comparingDouble(Hypothesis::score));
-        return ranked.subList(0, Math.min(keep, ranked.size()));
+        return ranked;
+    }
+
+    /**
+     * The poses to refine from a ranked pool: the best {@code keep} at least {@link #DISTINCT_HEADING_DEG} apart, then
+     * the best of every FOV bin that has none among them (a skyline that fits a wrong FOV a little better at the
+     * coarse step must not keep the true FOV from being refined).
+     */
+    static List<Hypothesis> choose(List<Hypothesis> ranked, int keep, OrientationPriors priors) {
+        List<Hypothesis> out = new ArrayList<>();
+        for (Hypothesis c : ranked) {
+            if (out.size() < keep && out.stream().allMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) > DISTINCT_HEADING_DEG)) {
+                out.add(c);
+            }
+        }
+        java.util.Set<Integer> bins = new java.util.HashSet<>();
+        for (Hypothesis c : out) {
+            bins.add(fovBin(c.hfovDeg(), priors));
+        }
+        for (Hypothesis c : ranked) {
+            if (!out.contains(c) && bins.add(fovBin(c.hfovDeg(), priors))) {
+                out.add(c);
+            }
+        }
+        return out;
     }
 
     private static double orZero(double v) {
@@ -352,8 +402,13 @@ public final class OrientationEstimator {
                 : (int) Math.floor(2 * priors.headingRangeDeg() / COARSE_HEADING_STEP_DEG) + 1;
         int nf = priors.hfovPinned() ? 1
                 : (int) Math.ceil(Math.log(priors.hfovMaxDeg() / priors.hfovMinDeg()) / Math.log1p(COARSE_FOV_STEP)) + 1;
-        double[] bestScore = new double[nh], bestFov = new double[nh], bestA = new double[nh], bestB = new double[nh];
-        java.util.Arrays.fill(bestScore, Double.POSITIVE_INFINITY);
+        int nb = fovBin(priors.hfovMaxDeg(), priors) + 1;
+        // Per FOV bin and heading: the best score over the bin's fields of view, and that pose.
+        double[][] bestScore = new double[nb][nh], bestFov = new double[nb][nh], bestA = new double[nb][nh],
+                bestB = new double[nb][nh];
+        for (double[] row : bestScore) {
+            java.util.Arrays.fill(row, Double.POSITIVE_INFINITY);
+        }
         int n = s.size();
         double cx = CameraIntrinsics.centre(w), cy = CameraIntrinsics.centre(h);
         double[] alpha = new double[n], el = new double[n], cosA = new double[n], sinA = new double[n], r = new double[n],
@@ -372,6 +427,8 @@ public final class OrientationEstimator {
                 sinA[i] = Math.sin(a);
             }
             double tDeg = Math.max(3 * Math.toDegrees(1 / f), 2 / profile.pixelsPerDegree());
+            int bin = fovBin(fov, priors);
+            double[] binScore = bestScore[bin], binFov = bestFov[bin], binA = bestA[bin], binB = bestB[bin];
             for (int j = 0; j < nh; j++) {
                 double heading = h0 + j * COARSE_HEADING_STEP_DEG;
                 for (int i = 0; i < n; i++) {
@@ -426,35 +483,57 @@ public final class OrientationEstimator {
                     sw += s.w()[i];
                 }
                 double score = sum / sw;
-                if (score < bestScore[j]) {
-                    bestScore[j] = score;
-                    bestFov[j] = fov;
-                    bestA[j] = pitch;
-                    bestB[j] = b;
+                if (score < binScore[j]) {
+                    binScore[j] = score;
+                    binFov[j] = fov;
+                    binA[j] = pitch;
+                    binB[j] = b;
                 }
             }
         }
-        // Local minima over heading, best first, at least DISTINCT_HEADING_DEG apart.
-        List<Integer> minima = new ArrayList<>();
-        for (int j = 0; j < nh; j++) {
-            int jl = full ? Math.floorMod(j - 1, nh) : Math.max(0, j - 1), jr = full ? (j + 1) % nh : Math.min(nh - 1, j + 1);
-            if (bestScore[j] <= bestScore[jl] && bestScore[j] <= bestScore[jr]) {
-                minima.add(j);
-            }
-        }
-        minima.sort(Comparator.comparingDouble(j -> bestScore[j]));
+        // Per FOV bin, its local minima over heading, best first, at least DISTINCT_HEADING_DEG apart; a minimum of
+        // one bin does not suppress another bin's (a wrong FOV one degree off must not hide the true FOV's heading).
         List<Hypothesis> out = new ArrayList<>();
-        for (int j : minima) {
-            double heading = h0 + j * COARSE_HEADING_STEP_DEG;
-            boolean distinct = out.stream().allMatch(o -> headingGap(o.headingDeg(), heading) > DISTINCT_HEADING_DEG);
-            if (distinct) {
-                out.add(new Hypothesis(heading, bestA[j], -bestB[j], bestFov[j], bestScore[j]));
-                if (out.size() == candidates) {
-                    break;
+        for (int bin = 0; bin < nb; bin++) {
+            double[] sc = bestScore[bin];
+            if (sc[0] == Double.POSITIVE_INFINITY) {
+                continue;
+            }
+            List<Integer> minima = new ArrayList<>();
+            for (int j = 0; j < nh; j++) {
+                int jl = full ? Math.floorMod(j - 1, nh) : Math.max(0, j - 1), jr = full ? (j + 1) % nh : Math.min(nh - 1, j + 1);
+                if (sc[j] <= sc[jl] && sc[j] <= sc[jr]) {
+                    minima.add(j);
                 }
             }
+            minima.sort(Comparator.comparingDouble(j -> sc[j]));
+            List<Hypothesis> binOut = new ArrayList<>();
+            for (int j : minima) {
+                double heading = h0 + j * COARSE_HEADING_STEP_DEG;
+                if (binOut.stream().allMatch(o -> headingGap(o.headingDeg(), heading) > DISTINCT_HEADING_DEG)) {
+                    binOut.add(new Hypothesis(heading, bestA[bin][j], -bestB[bin][j], bestFov[bin][j], sc[j]));
+                    if (binOut.size() == candidates) {
+                        break;
+                    }
+                }
+            }
+            out.addAll(binOut);
         }
-        return out;
+        out.sort(Comparator.comparingDouble(Hypothesis::score));
+        // Near duplicates across bins (same heading, about the same FOV: a bin edge) count once.
+        List<Hypothesis> kept = new ArrayList<>();
+        for (Hypothesis o : out) {
+            if (kept.stream().noneMatch(k -> headingGap(k.headingDeg(), o.headingDeg()) <= COARSE_HEADING_STEP_DEG * 2
+                    && Math.abs(Math.log(k.hfovDeg() / o.hfovDeg())) < Math.log(FOV_BIN_RATIO) / 2)) {
+                kept.add(o);
+            }
+        }
+        return kept;
+    }
+
+    /** The coarse stage's FOV bin of a field of view: 0 from the prior's smallest, {@link #FOV_BIN_RATIO} wide. */
+    static int fovBin(double hfovDeg, OrientationPriors priors) {
+        return Math.max(0, (int) Math.floor(Math.log(hfovDeg / priors.hfovMinDeg()) / Math.log(FOV_BIN_RATIO) + 1e-9));
     }
 
     /** Levenberg–Marquardt on the truncated squared pixel residuals, over the free parameters. */
@@ -527,7 +606,7 @@ public final class OrientationEstimator {
                         q[k] += dp == null ? 0 : dp[k];
                     }
                     q[1] = Math.max(-priors.pitchLimitDeg() - 5, Math.min(priors.pitchLimitDeg() + 5, q[1]));
-                    q[3] = Math.max(priors.hfovMinDeg() * 0.97, Math.min(Math.min(179, priors.hfovMaxDeg() * 1.03), q[3]));
+                    q[3] = Math.max(fovLow(priors), Math.min(fovHigh(priors), q[3]));
                     double[] rq = residualsPx(hyp(q), s, w, h, profile);
                     double cq = truncatedCost(rq, s, t);
                     if (cq < cost) {
