@@ -63,6 +63,8 @@ public final class OrientationEstimator {
      * the pool holds FOV-distinct poses: at 15°–100°, nine bins.
      */
     static final double FOV_BIN_RATIO = 1.25;
+    /** Each FOV bin gets at least this many of its best distinct headings refined. */
+    static final int PER_BIN_REFINED = 2;
     /** Candidates refined when inner edges are matched too (the skyline alone ranks them less reliably). */
     static final int CANDIDATES_WITH_EDGES = 12;
     /** With inner edges: this many coarse skyline optima per FOV bin are ranked by skyline and edge score together. */
@@ -367,7 +369,7 @@ public final class OrientationEstimator {
 
     /**
      * The poses to refine from a ranked pool: the best {@code keep} at least {@link #DISTINCT_HEADING_DEG} apart, then
-     * the best of every FOV bin that has none among them (a skyline that fits a wrong FOV a little better at the
+     * per FOV bin the best distinct headings until the bin has {@link #PER_BIN_REFINED} among the chosen (a skyline that fits a wrong FOV a little better at the
      * coarse step must not keep the true FOV from being refined).
      */
     static List<Hypothesis> choose(List<Hypothesis> ranked, int keep, OrientationPriors priors) {
@@ -377,15 +379,20 @@ public final class OrientationEstimator {
                 out.add(c);
             }
         }
-        java.util.Set<Integer> bins = new java.util.HashSet<>();
+        java.util.Map<Integer, List<Hypothesis>> perBin = new java.util.HashMap<>();
         for (Hypothesis c : out) {
-            bins.add(fovBin(c.hfovDeg(), priors));
+            perBin.computeIfAbsent(fovBin(c.hfovDeg(), priors), b -> new ArrayList<>()).add(c);
         }
+        List<Hypothesis> extra = new ArrayList<>();
         for (Hypothesis c : ranked) {
-            if (!out.contains(c) && bins.add(fovBin(c.hfovDeg(), priors))) {
-                out.add(c);
+            List<Hypothesis> bin = perBin.computeIfAbsent(fovBin(c.hfovDeg(), priors), b -> new ArrayList<>());
+            if (bin.size() < PER_BIN_REFINED && !out.contains(c)
+                    && bin.stream().allMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) > DISTINCT_HEADING_DEG)) {
+                bin.add(c);
+                extra.add(c);
             }
         }
+        out.addAll(extra);
         return out;
     }
 
