@@ -77,6 +77,71 @@ class OrientationEstimatorTest {
     }
 
     @Test
+    void theCoarsePoolHoldsEveryFovBinAndTheTruthInItsOwn() {
+        HorizonProfile profile = SyntheticSkyline.profile(SyntheticSkyline::ridge, 10);
+        double truthHeading = 123.4, truthFov = 40;
+        Skyline sky = SyntheticSkyline.project(SyntheticSkyline::ridge, W, H, new CameraOrientation(truthHeading, 4, -3), truthFov);
+        OrientationEstimator.Samples s = OrientationEstimator.Samples.of(sky, OrientationEstimator.COARSE_SAMPLES);
+        java.util.List<OrientationEstimator.Hypothesis> pool = OrientationEstimator.coarse(s, W, H, profile, OrientationPriors.NONE, 6);
+        // 15°–100° in bins of ratio 1.25: ln(100/15)/ln(1.25) = 8.5, so bins 0..8.
+        java.util.Set<Integer> bins = new java.util.TreeSet<>();
+        for (OrientationEstimator.Hypothesis h : pool) {
+            int b = OrientationEstimator.fovBin(h.hfovDeg(), OrientationPriors.NONE);
+            bins.add(b);
+            // Each pose's FOV lies in its bin: [15·1.25^b, 15·1.25^(b+1)).
+            assertTrue(h.hfovDeg() >= 15 * Math.pow(1.25, b) - 1e-9 && h.hfovDeg() < 15 * Math.pow(1.25, b + 1), h.toString());
+        }
+        assertEquals(java.util.Set.of(0, 1, 2, 3, 4, 5, 6, 7, 8), bins);
+        int trueBin = OrientationEstimator.fovBin(truthFov, OrientationPriors.NONE);
+        OrientationEstimator.Hypothesis inBin = pool.stream()
+                .filter(h -> OrientationEstimator.fovBin(h.hfovDeg(), OrientationPriors.NONE) == trueBin)
+                .min(java.util.Comparator.comparingDouble(OrientationEstimator.Hypothesis::score)).orElseThrow();
+        assertTrue(OrientationEstimator.headingGap(inBin.headingDeg(), truthHeading) <= 0.25, inBin.toString());
+        assertEquals(truthFov, inBin.hfovDeg(), 0.015 * truthFov, inBin.toString());
+        // The truth is the best of the whole pool too: the bins add poses, they do not reorder the best.
+        assertEquals(inBin, pool.get(0));
+    }
+
+    @Test
+    void chooseKeepsTheBestDistinctHeadingsThenTwoPerFovBin() {
+        // Ranked pool (score ascending): bins by FOV 20 → 1, 30 → 3, 50 → 5, 80 → 7 (floor(ln(fov / 15) / ln 1.25)).
+        java.util.List<OrientationEstimator.Hypothesis> ranked = java.util.List.of(
+                new OrientationEstimator.Hypothesis(10, 0, 0, 20, 0.1),
+                new OrientationEstimator.Hypothesis(11, 0, 0, 30, 0.2),   // same heading as the first (gap 1° ≤ 2°)
+                new OrientationEstimator.Hypothesis(50, 0, 0, 20, 0.3),
+                new OrientationEstimator.Hypothesis(90, 0, 0, 50, 0.4),
+                new OrientationEstimator.Hypothesis(91, 0, 0, 50, 0.5),   // bin 5's second, but 1° from its first
+                new OrientationEstimator.Hypothesis(200, 0, 0, 50, 0.6),  // bin 5's second distinct
+                new OrientationEstimator.Hypothesis(300, 0, 0, 50, 0.7),  // bin 5 full
+                new OrientationEstimator.Hypothesis(250, 0, 0, 20, 0.8),  // bin 1 full (10°, 50°)
+                new OrientationEstimator.Hypothesis(120, 0, 0, 80, 0.9));
+        java.util.List<OrientationEstimator.Hypothesis> out = OrientationEstimator.choose(ranked, 2, OrientationPriors.NONE);
+        // keep = 2 distinct headings: 10° and 50°; then per bin up to two distinct: bin 3 gets 11° (its only one),
+        // bin 5 gets 90° and 200°, bin 7 gets 120°.
+        assertEquals(java.util.List.of(ranked.get(0), ranked.get(2), ranked.get(1), ranked.get(3), ranked.get(5),
+                ranked.get(8)), out);
+    }
+
+    @Test
+    void aFieldOfViewOutsideThePriorIsFlaggedUnsure() {
+        HorizonProfile profile = SyntheticSkyline.profile(SyntheticSkyline::ridge, 10);
+        Skyline sky = SyntheticSkyline.project(SyntheticSkyline::ridge, W, H, new CameraOrientation(123.4, 4, -3), 85);
+        OrientationPriors narrow = OrientationPriors.NONE.withHfovRangeDeg(20, 60);
+        // The true FOV cannot be reached: whatever pose fits best, it is not a confident one.
+        OrientationEstimate e = OrientationEstimator.estimate(sky, profile, narrow);
+        assertTrue(e.unsure(), e.summary());
+        // Refinement may leave the prior by 3 %: 20 × 0.97 = 19.4°, 60 × 1.03 = 61.8° are the bounds.
+        assertTrue(OrientationEstimator.onFovBound(61.8, narrow));
+        assertTrue(OrientationEstimator.onFovBound(19.4, narrow));
+        assertFalse(OrientationEstimator.onFovBound(61.5, narrow));
+        assertFalse(OrientationEstimator.onFovBound(19.6, narrow));
+        assertFalse(OrientationEstimator.onFovBound(61.8, OrientationPriors.NONE.withHfovRangeDeg(61.8, 61.8)));
+        OrientationEstimate inside = OrientationEstimator.estimate(sky, profile, OrientationPriors.NONE.withHfovRangeDeg(20, 95));
+        assertEquals(85, inside.hfovDeg(), 0.5, inside.summary());
+        assertFalse(inside.unsure(), inside.summary());
+    }
+
+    @Test
     void tooLittleSkylineIsAClearError() {
         HorizonProfile profile = SyntheticSkyline.profile(SyntheticSkyline::ridge, 10);
         double[] rows = new double[W];
