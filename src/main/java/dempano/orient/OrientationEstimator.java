@@ -67,8 +67,11 @@ public final class OrientationEstimator {
     static final int PER_BIN_REFINED = 2;
     /** Candidates refined when inner edges are matched too (the skyline alone ranks them less reliably). */
     static final int CANDIDATES_WITH_EDGES = 12;
-    /** With inner edges: this many coarse skyline optima per FOV bin are ranked by skyline and edge score together. */
-    static final int COARSE_POOL_PER_BIN = 16;
+    /**
+     * With inner edges: this many coarse skyline optima over all FOVs (and a third as many per FOV bin) are ranked by
+     * skyline and edge score together.
+     */
+    static final int COARSE_POOL = 48;
     /** Edge residual truncation when ranking coarse poses, photo pixels (before the scaling to panorama pixels). */
     static final double COARSE_EDGE_TRUNCATION_PX = 6;
     /** Weight of the inner-edge (chamfer) term relative to the skyline term. */
@@ -213,8 +216,8 @@ public final class OrientationEstimator {
         List<Hypothesis> candidates = priors.headingPinned()
                 ? List.of(new Hypothesis(priors.headingDeg(), orZero(priors.pitchDeg()), orZero(priors.rollDeg()),
                 Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg()), Double.NaN))
-                : choose(rankWithEdges(coarse(coarse, w, h, profile, priors, target.hasEdges() ? COARSE_POOL_PER_BIN : nCand),
-                target, w, h, profile), nCand, priors);
+                : chooseFrom(coarse(coarse, w, h, profile, priors, target.hasEdges() ? COARSE_POOL : nCand),
+                target, w, h, profile, nCand, priors);
         List<Hypothesis> refined = new ArrayList<>();
         for (Hypothesis c : candidates) {
             refined.add(refine(c, target, w, h, profile, priors));
@@ -368,17 +371,23 @@ public final class OrientationEstimator {
     }
 
     /**
-     * The poses to refine from a ranked pool: the best {@code keep} at least {@link #DISTINCT_HEADING_DEG} apart, then
-     * per FOV bin the best distinct headings until the bin has {@link #PER_BIN_REFINED} among the chosen (a skyline that fits a wrong FOV a little better at the
-     * coarse step must not keep the true FOV from being refined).
+     * The poses to refine: the best {@code keep} of the pool over all FOVs (ranked with edges), then per FOV bin its
+     * best distinct headings until the bin has {@link #PER_BIN_REFINED} among the chosen.
      */
-    static List<Hypothesis> choose(List<Hypothesis> ranked, int keep, OrientationPriors priors) {
-        List<Hypothesis> out = new ArrayList<>();
-        for (Hypothesis c : ranked) {
-            if (out.size() < keep && out.stream().allMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) > DISTINCT_HEADING_DEG)) {
-                out.add(c);
-            }
-        }
+    static List<Hypothesis> chooseFrom(CoarsePool pool, Target t, int w, int h, HorizonProfile profile, int keep,
+                                       OrientationPriors priors) {
+        List<Hypothesis> global = rankWithEdges(pool.global(), t, w, h, profile);
+        return choose(global.subList(0, Math.min(keep, global.size())), rankWithEdges(pool.perBin(), t, w, h, profile), priors);
+    }
+
+    /**
+     * The poses to refine: {@code first} (the best over all FOVs, at least {@link #DISTINCT_HEADING_DEG} apart), then
+     * from the ranked per-bin pool, per FOV bin its best distinct headings until the bin has {@link #PER_BIN_REFINED}
+     * among the chosen (a skyline that fits a wrong FOV a little better at the coarse step must not keep the true
+     * FOV from being refined; the candidates of the search over all FOVs are all kept).
+     */
+    static List<Hypothesis> choose(List<Hypothesis> first, List<Hypothesis> ranked, OrientationPriors priors) {
+        List<Hypothesis> out = new ArrayList<>(first);
         java.util.Map<Integer, List<Hypothesis>> perBin = new java.util.HashMap<>();
         for (Hypothesis c : out) {
             perBin.computeIfAbsent(fovBin(c.hfovDeg(), priors), b -> new ArrayList<>()).add(c);
@@ -387,7 +396,9 @@ public final class OrientationEstimator {
         for (Hypothesis c : ranked) {
             List<Hypothesis> bin = perBin.computeIfAbsent(fovBin(c.hfovDeg(), priors), b -> new ArrayList<>());
             if (bin.size() < PER_BIN_REFINED && !out.contains(c)
-                    && bin.stream().allMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) > DISTINCT_HEADING_DEG)) {
+                    && bin.stream().allMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) > DISTINCT_HEADING_DEG)
+                    && out.stream().noneMatch(o -> headingGap(o.headingDeg(), c.headingDeg()) <= 2 * COARSE_HEADING_STEP_DEG
+                    && Math.abs(Math.log(o.hfovDeg() / c.hfovDeg())) < Math.log(FOV_BIN_RATIO) / 2)) {
                 bin.add(c);
                 extra.add(c);
             }
@@ -400,9 +411,17 @@ public final class OrientationEstimator {
         return Double.isNaN(v) ? 0 : v;
     }
 
-    /** The coarse search: the best distinct local optima over heading, best first. */
-    static List<Hypothesis> coarse(Samples s, int w, int h, HorizonProfile profile, OrientationPriors priors,
-                                   int candidates) {
+    /**
+     * The coarse search's poses: {@code global}, the best {@code candidates} distinct local optima over heading of the
+     * best score over every FOV; {@code perBin}, per FOV bin the best max({@link #CANDIDATES}, candidates / 3) of its
+     * own. Both best first.
+     */
+    record CoarsePool(List<Hypothesis> global, List<Hypothesis> perBin) {
+    }
+
+    /** The coarse search (see {@link CoarsePool}). */
+    static CoarsePool coarse(Samples s, int w, int h, HorizonProfile profile, OrientationPriors priors,
+                             int candidates) {
         boolean full = Double.isNaN(priors.headingDeg()) || priors.headingRangeDeg() >= 180;
         double h0 = full ? 0 : priors.headingDeg() - priors.headingRangeDeg();
         int nh = full ? (int) Math.round(360 / COARSE_HEADING_STEP_DEG)
@@ -498,44 +517,63 @@ public final class OrientationEstimator {
                 }
             }
         }
-        // Per FOV bin, its local minima over heading, best first, at least DISTINCT_HEADING_DEG apart; a minimum of
-        // one bin does not suppress another bin's (a wrong FOV one degree off must not hide the true FOV's heading).
+        // Over all FOVs (the best bin per heading): its local minima over heading, best first, at least
+        // DISTINCT_HEADING_DEG apart.
+        double[] allScore = new double[nh];
+        int[] allBin = new int[nh];
+        java.util.Arrays.fill(allScore, Double.POSITIVE_INFINITY);
+        for (int bin = 0; bin < nb; bin++) {
+            for (int j = 0; j < nh; j++) {
+                if (bestScore[bin][j] < allScore[j]) {
+                    allScore[j] = bestScore[bin][j];
+                    allBin[j] = bin;
+                }
+            }
+        }
+        List<Hypothesis> global = new ArrayList<>();
+        for (int j : headingMinima(allScore, full, h0, candidates)) {
+            int bin = allBin[j];
+            global.add(new Hypothesis(h0 + j * COARSE_HEADING_STEP_DEG, bestA[bin][j], -bestB[bin][j], bestFov[bin][j], allScore[j]));
+        }
+        // Per FOV bin, its own local minima: a minimum of one bin does not suppress another bin's (a wrong FOV one
+        // degree off must not hide the true FOV's heading).
+        int perBinCount = Math.max(CANDIDATES, candidates / 3);
         List<Hypothesis> out = new ArrayList<>();
         for (int bin = 0; bin < nb; bin++) {
-            double[] sc = bestScore[bin];
-            if (sc[0] == Double.POSITIVE_INFINITY) {
+            if (bestScore[bin][0] == Double.POSITIVE_INFINITY) {
                 continue;
             }
-            List<Integer> minima = new ArrayList<>();
-            for (int j = 0; j < nh; j++) {
-                int jl = full ? Math.floorMod(j - 1, nh) : Math.max(0, j - 1), jr = full ? (j + 1) % nh : Math.min(nh - 1, j + 1);
-                if (sc[j] <= sc[jl] && sc[j] <= sc[jr]) {
-                    minima.add(j);
-                }
+            for (int j : headingMinima(bestScore[bin], full, h0, perBinCount)) {
+                out.add(new Hypothesis(h0 + j * COARSE_HEADING_STEP_DEG, bestA[bin][j], -bestB[bin][j], bestFov[bin][j],
+                        bestScore[bin][j]));
             }
-            minima.sort(Comparator.comparingDouble(j -> sc[j]));
-            List<Hypothesis> binOut = new ArrayList<>();
-            for (int j : minima) {
-                double heading = h0 + j * COARSE_HEADING_STEP_DEG;
-                if (binOut.stream().allMatch(o -> headingGap(o.headingDeg(), heading) > DISTINCT_HEADING_DEG)) {
-                    binOut.add(new Hypothesis(heading, bestA[bin][j], -bestB[bin][j], bestFov[bin][j], sc[j]));
-                    if (binOut.size() == candidates) {
-                        break;
-                    }
-                }
-            }
-            out.addAll(binOut);
         }
         out.sort(Comparator.comparingDouble(Hypothesis::score));
-        // Near duplicates across bins (same heading, about the same FOV: a bin edge) count once.
-        List<Hypothesis> kept = new ArrayList<>();
-        for (Hypothesis o : out) {
-            if (kept.stream().noneMatch(k -> headingGap(k.headingDeg(), o.headingDeg()) <= COARSE_HEADING_STEP_DEG * 2
-                    && Math.abs(Math.log(k.hfovDeg() / o.hfovDeg())) < Math.log(FOV_BIN_RATIO) / 2)) {
-                kept.add(o);
+        return new CoarsePool(global, out);
+    }
+
+    /** Indices of the best {@code count} local minima of a score over heading, at least DISTINCT_HEADING_DEG apart. */
+    private static List<Integer> headingMinima(double[] sc, boolean full, double h0, int count) {
+        int nh = sc.length;
+        List<Integer> minima = new ArrayList<>();
+        for (int j = 0; j < nh; j++) {
+            int jl = full ? Math.floorMod(j - 1, nh) : Math.max(0, j - 1), jr = full ? (j + 1) % nh : Math.min(nh - 1, j + 1);
+            if (sc[j] <= sc[jl] && sc[j] <= sc[jr]) {
+                minima.add(j);
             }
         }
-        return kept;
+        minima.sort(Comparator.comparingDouble(j -> sc[j]));
+        List<Integer> out = new ArrayList<>();
+        for (int j : minima) {
+            double heading = h0 + j * COARSE_HEADING_STEP_DEG;
+            if (out.stream().allMatch(o -> headingGap(h0 + o * COARSE_HEADING_STEP_DEG, heading) > DISTINCT_HEADING_DEG)) {
+                out.add(j);
+                if (out.size() == count) {
+                    break;
+                }
+            }
+        }
+        return out;
     }
 
     /** The coarse stage's FOV bin of a field of view: 0 from the prior's smallest, {@link #FOV_BIN_RATIO} wide. */

@@ -82,7 +82,8 @@ class OrientationEstimatorTest {
         double truthHeading = 123.4, truthFov = 40;
         Skyline sky = SyntheticSkyline.project(SyntheticSkyline::ridge, W, H, new CameraOrientation(truthHeading, 4, -3), truthFov);
         OrientationEstimator.Samples s = OrientationEstimator.Samples.of(sky, OrientationEstimator.COARSE_SAMPLES);
-        java.util.List<OrientationEstimator.Hypothesis> pool = OrientationEstimator.coarse(s, W, H, profile, OrientationPriors.NONE, 6);
+        OrientationEstimator.CoarsePool coarse = OrientationEstimator.coarse(s, W, H, profile, OrientationPriors.NONE, 6);
+        java.util.List<OrientationEstimator.Hypothesis> pool = coarse.perBin();
         // 15°–100° in bins of ratio 1.25: ln(100/15)/ln(1.25) = 8.5, so bins 0..8.
         java.util.Set<Integer> bins = new java.util.TreeSet<>();
         for (OrientationEstimator.Hypothesis h : pool) {
@@ -98,12 +99,14 @@ class OrientationEstimatorTest {
                 .min(java.util.Comparator.comparingDouble(OrientationEstimator.Hypothesis::score)).orElseThrow();
         assertTrue(OrientationEstimator.headingGap(inBin.headingDeg(), truthHeading) <= 0.25, inBin.toString());
         assertEquals(truthFov, inBin.hfovDeg(), 0.015 * truthFov, inBin.toString());
-        // The truth is the best of the whole pool too: the bins add poses, they do not reorder the best.
+        // The truth is the best of the whole pool too, and of the search over all FOVs.
         assertEquals(inBin, pool.get(0));
+        assertEquals(inBin, coarse.global().get(0));
+        assertEquals(6, coarse.global().size());
     }
 
     @Test
-    void chooseKeepsTheBestDistinctHeadingsThenTwoPerFovBin() {
+    void chooseKeepsTheFirstThenTwoDistinctHeadingsPerFovBin() {
         // Ranked pool (score ascending): bins by FOV 20 → 1, 30 → 3, 50 → 5, 80 → 7 (floor(ln(fov / 15) / ln 1.25)).
         java.util.List<OrientationEstimator.Hypothesis> ranked = java.util.List.of(
                 new OrientationEstimator.Hypothesis(10, 0, 0, 20, 0.1),
@@ -115,8 +118,9 @@ class OrientationEstimatorTest {
                 new OrientationEstimator.Hypothesis(300, 0, 0, 50, 0.7),  // bin 5 full
                 new OrientationEstimator.Hypothesis(250, 0, 0, 20, 0.8),  // bin 1 full (10°, 50°)
                 new OrientationEstimator.Hypothesis(120, 0, 0, 80, 0.9));
-        java.util.List<OrientationEstimator.Hypothesis> out = OrientationEstimator.choose(ranked, 2, OrientationPriors.NONE);
-        // keep = 2 distinct headings: 10° and 50°; then per bin up to two distinct: bin 3 gets 11° (its only one),
+        java.util.List<OrientationEstimator.Hypothesis> out = OrientationEstimator.choose(
+                java.util.List.of(ranked.get(0), ranked.get(2)), ranked, OrientationPriors.NONE);
+        // first: 10° and 50° (the search over all FOVs); then per bin up to two distinct: bin 3 gets 11° (its only one),
         // bin 5 gets 90° and 200°, bin 7 gets 120°.
         assertEquals(java.util.List.of(ranked.get(0), ranked.get(2), ranked.get(1), ranked.get(3), ranked.get(5),
                 ranked.get(8)), out);
