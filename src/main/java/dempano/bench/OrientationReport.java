@@ -112,7 +112,8 @@ public final class OrientationReport {
             - `OrientationEstimator`: coarse, for every heading (0.25° steps, or within a prior) and every FOV (1.5 %
               steps in 15°–100°) the skyline samples are placed as a level pinhole camera sees them; pitch and roll are
               removed by a robust linear fit (median start, two trimmed least-squares passes) of θ·cos α − φ·sin α;
-              score = mean truncated residual. The 12 best distinct local optima (6 without inner edges) are refined with
+              score = mean truncated residual. The 12 best distinct local optima over all FOVs (6 without inner edges),
+              and in each FOV bin (ratio 1.25: nine bins) its two best distinct headings, are refined with
               the exact camera model by Levenberg–Marquardt on truncated squared pixel residuals (truncation 12 → 6 →
               3 px): the skyline residuals and, for every edge point, its distance to the nearest rendered depth edge
               (chamfer), the edges weighing %EDGE_WEIGHT% of the skyline in all.
