@@ -22,14 +22,4 @@ public record DemFill(VoidFill voidFill, PriorityDem.Blend blend) implements jav
         Objects.requireNonNull(voidFill, "voidFill");
         Objects.requireNonNull(blend, "blend");
     }
-
-    /** This fill with another interpolation of the voids no source has. */
-    public DemFill withVoidFill(VoidFill v) {
-        return new DemFill(v, blend);
-    }
-
-    /** This fill with another blend of the lower-priority sources. */
-    public DemFill withBlend(PriorityDem.Blend b) {
-        return new DemFill(voidFill, b);
-    }
 }

@@ -151,16 +151,14 @@ final class SplineVoidFill {
             mark(stencil, n, r, c - 1);
             mark(stencil, n, r, c + 1);
         }
-        int[] p = stencil.stream().toArray();
-        byte[] edges = edges(u, n);
+        Operator op = new Operator(n, u, stencil.stream().toArray(), edges(u, n), new double[v.length], membrane, plate);
         double[] full = new double[v.length];
-        double[] lap = new double[v.length];
         // Right-hand side: minus the operator applied to the valid samples (voids at 0).
         for (int i = 0; i < v.length; i++) {
             full[i] = Double.isNaN(v[i]) ? 0 : v[i];
         }
         double[] b = new double[k];
-        apply(full, n, u, p, edges, lap, membrane, plate, b);
+        op.apply(full, b);
         for (int j = 0; j < k; j++) {
             b[j] = -b[j];
         }
@@ -171,7 +169,7 @@ final class SplineVoidFill {
             full[u[j]] = x[j];
         }
         double[] ap = new double[k];
-        apply(full, n, u, p, edges, lap, membrane, plate, ap);
+        op.apply(full, ap);
         double[] r = new double[k], d = new double[k];
         double rr = 0, bb = 0;
         for (int j = 0; j < k; j++) {
@@ -186,7 +184,7 @@ final class SplineVoidFill {
             for (int j = 0; j < k; j++) {
                 full[u[j]] = d[j];
             }
-            apply(full, n, u, p, edges, lap, membrane, plate, ap);
+            op.apply(full, ap);
             double dAd = 0;
             for (int j = 0; j < k; j++) {
                 dAd += d[j] * ap[j];
@@ -233,104 +231,107 @@ final class SplineVoidFill {
     }
 
     /**
-     * The energy's Hessian (halved) applied to {@code full} (valid samples zero or not, as the
-     * caller needs), evaluated at the voids {@code u} into {@code out}; {@code lap} is scratch that
-     * must be zero outside {@code p}; {@code edges} from {@link #edges}. The same operations in the same
-     * order for every void, so the same result to the bit, whether a void is inside the grid (the branch-free
-     * path, nearly all of them) or on its border.
+     * The energy's Hessian (halved) on one grid: the voids {@code u} it is evaluated at, the interior
+     * samples {@code p} whose Laplacian it needs, each void's neighbour flags ({@link #edges}), and
+     * {@code lap}, scratch that must be zero outside {@code p}.
      */
-    private static void apply(double[] full, int n, int[] u, int[] p, byte[] edges, double[] lap, double membrane,
-                              double plate, double[] out) {
-        int chunks = parallel ? Math.min(MAX_CHUNKS, u.length / CHUNK_UNKNOWNS) : 1;
-        if (chunks < 2) {
-            if (plate > 0) {
-                laplacians(full, n, p, lap, 0, p.length);
+    private record Operator(int n, int[] u, int[] p, byte[] edges, double[] lap, double membrane, double plate) {
+        /**
+         * The operator applied to {@code full} (valid samples zero or not, as the caller needs), at the voids
+         * into {@code out}. The same operations in the same order for every void, so the same result to the
+         * bit, whether a void is inside the grid (the branch-free path, nearly all of them) or on its border.
+         */
+        void apply(double[] full, double[] out) {
+            int chunks = parallel ? Math.min(MAX_CHUNKS, u.length / CHUNK_UNKNOWNS) : 1;
+            if (chunks < 2) {
+                if (plate > 0) {
+                    laplacians(full, 0, p.length);
+                }
+                applyRange(full, out, 0, u.length);
+                return;
             }
-            applyRange(full, n, u, edges, lap, membrane, plate, out, 0, u.length);
-            return;
+            // Every output sample depends on its inputs alone: any split gives the same values, bit for bit.
+            if (plate > 0) {
+                java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> laplacians(full,
+                        (int) ((long) p.length * c / chunks), (int) ((long) p.length * (c + 1) / chunks)));
+            }
+            java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> applyRange(full, out,
+                    (int) ((long) u.length * c / chunks), (int) ((long) u.length * (c + 1) / chunks)));
         }
-        // Every output sample depends on its inputs alone: any split gives the same values, bit for bit.
-        if (plate > 0) {
-            java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> laplacians(full, n, p, lap,
-                    (int) ((long) p.length * c / chunks), (int) ((long) p.length * (c + 1) / chunks)));
-        }
-        java.util.stream.IntStream.range(0, chunks).parallel().forEach(c -> applyRange(full, n, u, edges, lap, membrane, plate,
-                out, (int) ((long) u.length * c / chunks), (int) ((long) u.length * (c + 1) / chunks)));
-    }
 
-    /** The discrete Laplacian of {@code full} at {@code p[from..to)} into {@code lap}. */
-    private static void laplacians(double[] full, int n, int[] p, double[] lap, int from, int to) {
-        for (int k = from; k < to; k++) {
-            int i = p[k];
-            lap[i] = full[i - n] + full[i + n] + full[i - 1] + full[i + 1] - 4 * full[i];
+        /** The discrete Laplacian of {@code full} at {@code p[from..to)} into {@code lap}. */
+        private void laplacians(double[] full, int from, int to) {
+            for (int k = from; k < to; k++) {
+                int i = p[k];
+                lap[i] = full[i - n] + full[i + n] + full[i - 1] + full[i + 1] - 4 * full[i];
+            }
         }
-    }
 
-    /** {@link #apply} at the voids {@code u[from..to)}, the Laplacians already in {@code lap}. */
-    private static void applyRange(double[] full, int n, int[] u, byte[] edges, double[] lap, double membrane,
-                                   double plate, double[] out, int from, int to) {
-        boolean useMembrane = membrane > 0, usePlate = plate > 0;
-        for (int j = from; j < to; j++) {
-            int i = u[j], e = edges[j];
-            double s = 0;
-            if (e == ALL) {
+        /** {@link #apply} at the voids {@code u[from..to)}, the Laplacians already in {@code lap}. */
+        private void applyRange(double[] full, double[] out, int from, int to) {
+            boolean useMembrane = membrane > 0, usePlate = plate > 0;
+            for (int j = from; j < to; j++) {
+                int i = u[j], e = edges[j];
+                double s = 0;
+                if (e == ALL) {
+                    if (useMembrane) {
+                        double sum = 0;
+                        sum += full[i - n];
+                        sum += full[i + n];
+                        sum += full[i - 1];
+                        sum += full[i + 1];
+                        s += membrane * (4 * full[i] - sum);
+                    }
+                    if (usePlate) {
+                        double t = -4 * lap[i];
+                        t += lap[i - n];
+                        t += lap[i + n];
+                        t += lap[i - 1];
+                        t += lap[i + 1];
+                        s += plate * t;
+                    }
+                    out[j] = s;
+                    continue;
+                }
                 if (useMembrane) {
+                    int degree = 0;
                     double sum = 0;
-                    sum += full[i - n];
-                    sum += full[i + n];
-                    sum += full[i - 1];
-                    sum += full[i + 1];
-                    s += membrane * (4 * full[i] - sum);
+                    if ((e & NORTH) != 0) {
+                        degree++;
+                        sum += full[i - n];
+                    }
+                    if ((e & SOUTH) != 0) {
+                        degree++;
+                        sum += full[i + n];
+                    }
+                    if ((e & WEST) != 0) {
+                        degree++;
+                        sum += full[i - 1];
+                    }
+                    if ((e & EAST) != 0) {
+                        degree++;
+                        sum += full[i + 1];
+                    }
+                    s += membrane * (degree * full[i] - sum);
                 }
                 if (usePlate) {
                     double t = -4 * lap[i];
-                    t += lap[i - n];
-                    t += lap[i + n];
-                    t += lap[i - 1];
-                    t += lap[i + 1];
+                    if ((e & NORTH) != 0) {
+                        t += lap[i - n];
+                    }
+                    if ((e & SOUTH) != 0) {
+                        t += lap[i + n];
+                    }
+                    if ((e & WEST) != 0) {
+                        t += lap[i - 1];
+                    }
+                    if ((e & EAST) != 0) {
+                        t += lap[i + 1];
+                    }
                     s += plate * t;
                 }
                 out[j] = s;
-                continue;
             }
-            if (useMembrane) {
-                int degree = 0;
-                double sum = 0;
-                if ((e & NORTH) != 0) {
-                    degree++;
-                    sum += full[i - n];
-                }
-                if ((e & SOUTH) != 0) {
-                    degree++;
-                    sum += full[i + n];
-                }
-                if ((e & WEST) != 0) {
-                    degree++;
-                    sum += full[i - 1];
-                }
-                if ((e & EAST) != 0) {
-                    degree++;
-                    sum += full[i + 1];
-                }
-                s += membrane * (degree * full[i] - sum);
-            }
-            if (usePlate) {
-                double t = -4 * lap[i];
-                if ((e & NORTH) != 0) {
-                    t += lap[i - n];
-                }
-                if ((e & SOUTH) != 0) {
-                    t += lap[i + n];
-                }
-                if ((e & WEST) != 0) {
-                    t += lap[i - 1];
-                }
-                if ((e & EAST) != 0) {
-                    t += lap[i + 1];
-                }
-                s += plate * t;
-            }
-            out[j] = s;
         }
     }
 }

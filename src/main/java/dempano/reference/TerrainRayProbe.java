@@ -68,11 +68,16 @@ public final class TerrainRayProbe implements RayProbe {
         static Pyramid of(Mosaic mosaic) {
             float[][] maxima = new float[LEVELS][];
             for (int level = 0; level < LEVELS; level++) {
-                maxima[level] = new float[((mosaic.rows() - 1) / BLOCK_CELLS[level] + 1) * ((mosaic.cols() - 1) / BLOCK_CELLS[level] + 1)];
+                maxima[level] = new float[blocks(mosaic.rows(), level) * blocks(mosaic.cols(), level)];
                 java.util.Arrays.fill(maxima[level], Float.NaN);
             }
             return new Pyramid(mosaic.sampleIdentity(), maxima);
         }
+    }
+
+    /** Blocks of a pyramid level along a side of {@code samples} samples. */
+    private static int blocks(int samples, int level) {
+        return (samples - 1) / BLOCK_CELLS[level] + 1;
     }
 
     /** The last pyramid made, for the next probe over the same samples. */
@@ -105,8 +110,8 @@ public final class TerrainRayProbe implements RayProbe {
         this.blockRows = new int[LEVELS];
         this.blockCols = new int[LEVELS];
         for (int level = 0; level < LEVELS; level++) {
-            blockRows[level] = (mosaic.rows() - 1) / BLOCK_CELLS[level] + 1;
-            blockCols[level] = (mosaic.cols() - 1) / BLOCK_CELLS[level] + 1;
+            blockRows[level] = blocks(mosaic.rows(), level);
+            blockCols[level] = blocks(mosaic.cols(), level);
         }
     }
 

@@ -18,7 +18,6 @@ import com.jme3.scene.Node;
 import com.jme3.system.AppSettings;
 import com.jme3.texture.FrameBuffer;
 import com.jme3.util.BufferUtils;
-import dempano.dem.DemDirectory;
 import dempano.dem.MissingTilePolicy;
 import dempano.dem.Mosaic;
 import dempano.geo.LocalFrame;
@@ -179,9 +178,9 @@ public final class OnscreenRenderer extends SimpleApplication {
     public void simpleInitApp() {
         windowOpened = true;
         try {
-            List<DemDirectory> dirs = new ArrayList<>();
-            opt.demDirs().forEach(d -> dirs.add(new DemDirectory(d)));
-            dempano.dem.DemSource dem = dempano.dem.PriorityDem.of(dirs);
+            // Opened as the command line opens them: the default fill, the folders' warnings said.
+            dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(opt.demDirs(), dempano.dem.DemFill.DEFAULT,
+                    w -> System.err.println("  warning: " + w));
             mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.SEA_LEVEL);
             start = Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres());
             frame = start.eyeFrame();

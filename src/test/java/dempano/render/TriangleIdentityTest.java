@@ -20,6 +20,7 @@ import dempano.panorama.ViewLayout;
 import dempano.terrain.EyePlacement;
 import dempano.terrain.SeenTriangleResolver;
 import dempano.terrain.TerrainBuilder;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -50,7 +51,7 @@ class TriangleIdentityTest {
         for (int n : terrain.patchesPerLevel()) {
             levels += n > 0 ? 1 : 0;
         }
-        assertTrue(levels >= 3, "full-resolution and simplified patches: " + java.util.Arrays.toString(terrain.patchesPerLevel()));
+        assertTrue(levels >= 3, "full-resolution and simplified patches: " + Arrays.toString(terrain.patchesPerLevel()));
         ViewLayout layout = ViewLayout.forPanorama(PanoramaGeometry.of(ppd, -15, 15), 8, 1);
         try (OffscreenRenderer.Handle handle = OffscreenRenderer.acquire()) {
             OffscreenRenderer gl = handle.renderer();
@@ -81,7 +82,7 @@ class TriangleIdentityTest {
                         continue;
                     }
                     terrainSamples++;
-                    int g = java.util.Arrays.binarySearch(bases, ids[i]);
+                    int g = Arrays.binarySearch(bases, ids[i]);
                     geometriesSeen.add(g >= 0 ? g : -g - 2);
                     double x = layout.xTanOfPixel(i % layout.widthPx()), y = layout.yTanOfPixel(i / layout.widthPx());
                     double east = a[0] * x + a[3] * y + a[6], north = a[1] * x + a[4] * y + a[7];
@@ -98,8 +99,8 @@ class TriangleIdentityTest {
                     }
                 }
             }
-            double[] sorted = java.util.Arrays.copyOf(relative, n);
-            java.util.Arrays.sort(sorted);
+            double[] sorted = Arrays.copyOf(relative, n);
+            Arrays.sort(sorted);
             double median = sorted[n / 2];
             System.out.printf("%s: %d samples on terrain, %d triangles seen, %d geometries; the named triangle "
                             + "gives the written range within 0.1 %% at %.4f %% of samples (%d on simplified "
