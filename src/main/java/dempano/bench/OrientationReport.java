@@ -331,6 +331,29 @@ public final class OrientationReport {
                 : (double) rs.stream().filter(r -> !Double.isNaN(r.est().headingDeg()) && r.headingError() <= x).count() / rs.size();
     }
 
+    /** Skylines nearer than this (metres) are near slopes: too close to orient from the image alone. */
+    static final double NEAR_SKYLINE_M = 1000;
+
+    /**
+     * Per step, photos within the step's tolerance (0.5°; 2° with occluders or clouds) whose skyline is at least
+     * {@link #NEAR_SKYLINE_M} away, and those whose skyline is nearer, as a markdown table.
+     */
+    static String nearFar(List<Row> rows) {
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "%n| step | tolerance | skyline ≥ %.0f km | skyline < %.0f km |%n|---|---|---|---|%n",
+                NEAR_SKYLINE_M / 1000, NEAR_SKYLINE_M / 1000));
+        for (SyntheticPhoto.Step step : SyntheticPhoto.Step.values()) {
+            double tol = step.ordinal() >= SyntheticPhoto.Step.OCCLUDERS.ordinal() ? 2 : 0.5;
+            b.append(String.format(Locale.ROOT, "| %s | %.1f° |", step.name().toLowerCase(Locale.ROOT), tol));
+            for (boolean far : new boolean[]{true, false}) {
+                List<Row> rs = rows.stream().filter(r -> r.step() == step && (r.skylineMetres() >= NEAR_SKYLINE_M) == far).toList();
+                long ok = rs.stream().filter(r -> !Double.isNaN(r.est().headingDeg()) && r.headingError() <= tol).count();
+                b.append(rs.isEmpty() ? " – |" : String.format(Locale.ROOT, " %d / %d (%.0f %%) |", ok, rs.size(), 100.0 * ok / rs.size()));
+            }
+            b.append('\n');
+        }
+        return b.append('\n').toString();
+    }
+
     /** The "reading the results" section, written from the numbers (targets of the issue: met or not). */
     static String reading(List<Row> rows, double warmSeconds, int photos) {
         StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "%n### Reading the results (%d photos)%n%n", photos));
@@ -360,6 +383,7 @@ public final class OrientationReport {
                         + " (with another FOV, pitch and roll) about equally well.%n",
                 misses.stream().filter(r -> r.est().inlierShare() >= 0.95).count(), misses.size(),
                 misses.stream().filter(r -> r.est().unsure()).count()));
+        b.append(nearFar(rows));
         double[] fovClear = rows.stream().filter(r -> r.step() == steps[0] && !Double.isNaN(r.est().hfovDeg()))
                 .mapToDouble(r -> Math.abs(r.est().hfovDeg() / r.hfovDeg() - 1)).toArray();
         double[] fovHazy = rows.stream().filter(r -> r.step() == steps[1] && !Double.isNaN(r.est().hfovDeg()))

@@ -78,6 +78,8 @@ public final class OrientationEstimator {
     public static final double EDGE_WEIGHT = 0.5;
     /** Fewer photo edge points than this: the skyline alone is matched. */
     static final int MIN_EDGE_POINTS = 20;
+    /** Heading offsets (degrees) of the restarts around the best refined pose ({@link #polish}). */
+    static final double[] POLISH_OFFSETS_DEG = {-0.8, -0.4, 0.4, 0.8};
     private static final double[] SCHEDULE_PX = {12, 6, TRUNCATION_PX};
     /** Poses refined against a camera render in the fine stage, at most. */
     public static final int FINE_CANDIDATES = 3;
@@ -223,6 +225,10 @@ public final class OrientationEstimator {
             refined.add(refine(c, target, w, h, profile, priors));
         }
         refined.sort(Comparator.comparingDouble(Hypothesis::score));
+        if (!priors.headingPinned()) {
+            refined.add(0, polish(refined.get(0), target, w, h, profile, priors));
+            refined.sort(Comparator.comparingDouble(Hypothesis::score));
+        }
         HorizonProfile bestProfile = profile;
         if (camera != null) {
             List<Hypothesis> chosen = new ArrayList<>();
@@ -313,6 +319,25 @@ public final class OrientationEstimator {
             hyp = refine(hyp, target, w, h, p, OrientationPriors.NONE);
         }
         return hyp.score();
+    }
+
+    /**
+     * Local restarts around a refined pose: the refinement fits truncated squares from a start, and on a far ridge whose
+     * skyline has sub-degree structure it can settle in a neighbouring minimum half a degree away. Refined again from
+     * the pose's heading moved by each of {@link #POLISH_OFFSETS_DEG} (pitch, roll and FOV kept), the lowest score wins
+     * (never worse than {@code best}, which is among the candidates).
+     */
+    static Hypothesis polish(Hypothesis best, Target target, int w, int h, HorizonProfile profile,
+                             OrientationPriors priors) {
+        Hypothesis out = best;
+        for (double d : POLISH_OFFSETS_DEG) {
+            Hypothesis r = refine(new Hypothesis(best.headingDeg() + d, best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+                    Double.NaN), target, w, h, profile, priors);
+            if (r.score() < out.score() && headingGap(r.headingDeg(), best.headingDeg()) <= DISTINCT_HEADING_DEG) {
+                out = r;
+            }
+        }
+        return out;
     }
 
     /**

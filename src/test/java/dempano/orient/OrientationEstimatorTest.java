@@ -218,4 +218,41 @@ class OrientationEstimatorTest {
         }
         System.out.printf(java.util.Locale.ROOT, "worst heading error: panorama only %.4f°, fine stage %.4f°%n", coarseWorst, fineWorst);
     }
+
+    /** The ridge with a ripple of period 0.8° and ±0.4° (about ±5 photo pixels at a 40° lens) added. */
+    static double rippled(double azDeg) {
+        return SyntheticSkyline.ridge(azDeg) + 0.4 * Math.sin(2 * Math.PI * azDeg / 0.8);
+    }
+
+    @Test
+    void polishLeavesANeighbouringRippleMinimumForTheTruePose() {
+        HorizonProfile profile = SyntheticSkyline.profile(OrientationEstimatorTest::rippled, 40);
+        double truth = 217.3, pitch = 2, roll = -1, fov = 40;
+        Skyline sky = SyntheticSkyline.project(OrientationEstimatorTest::rippled, W, H, new CameraOrientation(truth, pitch, roll), fov);
+        OrientationEstimator.Samples fine = OrientationEstimator.Samples.of(sky, OrientationEstimator.FINE_SAMPLES);
+        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0);
+        // Started one ripple period off, the refinement alone stays in that period's minimum (the precondition).
+        OrientationEstimator.Hypothesis stuck = OrientationEstimator.refine(new OrientationEstimator.Hypothesis(
+                truth + 0.8, pitch, roll, fov, Double.NaN), target, W, H, profile, OrientationPriors.NONE);
+        assertTrue(OrientationEstimator.headingGap(stuck.headingDeg(), truth) > 0.5, "refined to " + stuck);
+        OrientationEstimator.Hypothesis polished = OrientationEstimator.polish(stuck, target, W, H, profile, OrientationPriors.NONE);
+        assertTrue(OrientationEstimator.headingGap(polished.headingDeg(), truth) < 0.05, "polished to " + polished);
+        assertEquals(fov, polished.hfovDeg(), 0.01 * fov, "polished to " + polished);
+        assertTrue(polished.score() < stuck.score(), polished + " vs " + stuck);
+    }
+
+    @Test
+    void polishNeverWorsensTheScoreNorLeavesTheDistinctHeadingGap() {
+        HorizonProfile profile = SyntheticSkyline.profile(OrientationEstimatorTest::rippled, 40);
+        Skyline sky = SyntheticSkyline.project(OrientationEstimatorTest::rippled, W, H, new CameraOrientation(80, 0, 0), 30);
+        OrientationEstimator.Samples fine = OrientationEstimator.Samples.of(sky, OrientationEstimator.FINE_SAMPLES);
+        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0);
+        for (double start : new double[]{80, 80.8, 83, 200}) {
+            OrientationEstimator.Hypothesis r = OrientationEstimator.refine(new OrientationEstimator.Hypothesis(
+                    start, 0, 0, 30, Double.NaN), target, W, H, profile, OrientationPriors.NONE);
+            OrientationEstimator.Hypothesis p = OrientationEstimator.polish(r, target, W, H, profile, OrientationPriors.NONE);
+            assertTrue(p.score() <= r.score(), p + " vs " + r);
+            assertTrue(OrientationEstimator.headingGap(p.headingDeg(), r.headingDeg()) <= OrientationEstimator.DISTINCT_HEADING_DEG, p + " vs " + r);
+        }
+    }
 }
