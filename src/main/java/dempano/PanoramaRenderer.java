@@ -389,6 +389,17 @@ public final class PanoramaRenderer implements AutoCloseable {
         return new Drawn(captures, seen, near, far, triangles);
     }
 
+    /**
+     * What one stitch with distances was given: enough to run {@link Stitcher#stitch} again on the same views, which
+     * {@link StitchBenchmark} does to time the stitch alone.
+     */
+    record StitchInputs(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+                        Stitcher.Exact exact, boolean colour) {
+    }
+
+    /** Receives each stitch's inputs where set (benchmarks only); null in normal use. */
+    static volatile Consumer<StitchInputs> stitchTap;
+
     /** Resamples drawn views into a target image's pixels (colour, distance), exact distances where asked. */
     private static Images stitch(PanoramaRequest req, Scene scene, TargetImage target, ViewLayout layout, Drawn drawn,
                                  Stopwatch clock, Consumer<String> progress) {
@@ -404,10 +415,13 @@ public final class PanoramaRenderer implements AutoCloseable {
                 inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), drawn.nearMetres(),
                         drawn.farMetres());
             }
-            Stitcher.Result stitched = Stitcher.stitch(target, layout, captures, inverseEyeDepth,
-                    exact ? new Stitcher.Exact(drawn.seen(), new TerrainRayProbe(scene.mosaic(), scene.eye(), req.refraction(),
-                            req.rangeMetres())) : null,
-                    argb, distance);
+            Stitcher.Exact exactInputs = exact ? new Stitcher.Exact(drawn.seen(), new TerrainRayProbe(scene.mosaic(), scene.eye(),
+                    req.refraction(), req.rangeMetres())) : null;
+            Consumer<StitchInputs> tap = stitchTap;
+            if (tap != null) {
+                tap.accept(new StitchInputs(target, layout, captures, inverseEyeDepth, exactInputs, argb != null));
+            }
+            Stitcher.Result stitched = Stitcher.stitch(target, layout, captures, inverseEyeDepth, exactInputs, argb, distance);
             if (exact) {
                 progress.accept("distances: " + stitched.exactPixels() + " pixels from the " + drawn.seen().triangles()
                         + " triangles seen, "

@@ -47,6 +47,11 @@ public final class Mosaic {
 
     // locate() results that are no tile sample.
     private static final long NOT_LOADED = -1, SEA_LEVEL = -2;
+    /**
+     * Per sample row and column: its tile row (column) of the grid, min(row / n, tiles − 1), looked up
+     * instead of divided (two integer divisions per sample were most of {@link #sample}'s time).
+     */
+    private final int[] tileOfRow, tileOfCol;
 
     private Mosaic(TileSelection sel, int intervalsPerDegree, HgtTile[][] tiles, boolean[][] seaLevel, List<TileId> used,
                    List<TileId> missing, List<String> warnings, String sourceDescription) {
@@ -57,6 +62,14 @@ public final class Mosaic {
         this.intervalsPerDegree = intervalsPerDegree;
         this.rows = tilesNorthSouth * intervalsPerDegree + 1;
         this.cols = tilesEastWest * intervalsPerDegree + 1;
+        this.tileOfRow = new int[rows];
+        for (int r = 0; r < rows; r++) {
+            tileOfRow[r] = Math.min(r / intervalsPerDegree, tilesNorthSouth - 1);
+        }
+        this.tileOfCol = new int[cols];
+        for (int c = 0; c < cols; c++) {
+            tileOfCol[c] = Math.min(c / intervalsPerDegree, tilesEastWest - 1);
+        }
         this.tiles = tiles;
         this.seaLevel = seaLevel;
         this.tilesUsed = Collections.unmodifiableList(used);
@@ -182,7 +195,7 @@ public final class Mosaic {
         if (row < 0 || col < 0 || row >= rows || col >= cols) {
             throw new IndexOutOfBoundsException("sample (" + row + ", " + col + ") outside the " + rows + "×" + cols + " mosaic");
         }
-        int tr = Math.min(row / n, tilesNorthSouth - 1), tc = Math.min(col / n, tilesEastWest - 1);
+        int tr = tileOfRow[row], tc = tileOfCol[col];
         int lr = row - tr * n, lc = col - tc * n;
         if (tiles[tr][tc] != null) {
             return pack(tr, tc, lr, lc);
@@ -387,7 +400,10 @@ public final class Mosaic {
 
     /** Fractional grid column of a longitude (either wrapping). */
     public double colOf(double lonDeg) {
-        double unwrapped = lonWestDeg + (((lonDeg - lonWestDeg) % 360) + 360) % 360;
+        double east = lonDeg - lonWestDeg, shifted = east + 360;
+        // Within a turn east (every call of the ray probe) the remainders are one subtraction, to the bit:
+        // (east % 360 + 360) % 360 is then fl(east + 360) − 360, exact. Two remainders were a third of its time.
+        double unwrapped = lonWestDeg + (east >= 0 && shifted < 720 ? shifted - 360 : ((east % 360) + 360) % 360);
         return (unwrapped - lonWestDeg) * intervalsPerDegree;
     }
 

@@ -20,4 +20,16 @@ public interface RayProbe {
      *         (or leaves the DEM); NaN when it stays above out to {@code toMetres} only (undecided)
      */
     double firstHitMetres(double dx, double dy, double dz, double fromMetres, double toMetres);
+
+    /**
+     * The nearest crossing of the ray with the full-resolution surface between two distances, by intersecting
+     * the surface's triangles over that stretch only: no search from nearer, so a crossing before
+     * {@code fromMetres} is not looked for. Cheap where the stretch is short.
+     *
+     * @return the distance, metres; NaN when the ray meets no triangle there, or the stretch is not tried
+     *         (too long, off the DEM); this default tries none
+     */
+    default double nearestHitBetweenMetres(double dx, double dy, double dz, double fromMetres, double toMetres) {
+        return Double.NaN;
+    }
 }

@@ -32,6 +32,8 @@ public final class TerrainRayProbe implements RayProbe {
     static final double TOLERANCE = 1e-9;
     /** Cells per block side of the maximum pyramid's levels, finest first (each a multiple of the one before). */
     private static final int[] BLOCK_CELLS = {4, 16, 64};
+    /** log2 of {@link #BLOCK_CELLS} (each a power of two). */
+    private static final int[] BLOCK_SHIFT = java.util.Arrays.stream(BLOCK_CELLS).map(Integer::numberOfTrailingZeros).toArray();
     private static final int LEVELS = BLOCK_CELLS.length;
     /**
      * Horizontal metres from an anchor (an exactly computed ray point) over which the ray's path in
@@ -56,6 +58,8 @@ public final class TerrainRayProbe implements RayProbe {
     private final double[] eyeFoot = new double[3];
     /** Cell steps' horizontal length: one of the mosaic's cells, the narrower (east–west) way. */
     private final double cellStepMetres;
+    /** A cell's longer side (north–south), metres. */
+    private final double cellLongestMetres;
     /** Per level: block rows and columns, and each block's highest sample (NaN until first asked). */
     private final int[] blockRows, blockCols;
     private final float[][] blockMaxima;
@@ -106,6 +110,7 @@ public final class TerrainRayProbe implements RayProbe {
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
         double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree();
         this.cellStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
+        this.cellLongestMetres = cellMetres;
         this.blockMaxima = pyramidFor(mosaic);
         this.blockRows = new int[LEVELS];
         this.blockCols = new int[LEVELS];
@@ -113,6 +118,20 @@ public final class TerrainRayProbe implements RayProbe {
             blockRows[level] = blocks(mosaic.rows(), level);
             blockCols[level] = blocks(mosaic.cols(), level);
         }
+    }
+
+    /** Horizontal metres over which {@link #nearestHitBetweenMetres} takes the ray's path in rows and columns as straight. */
+    static final double STRAIGHT_PATH_METRES = 2000;
+
+    @Override
+    public double nearestHitBetweenMetres(double dx, double dy, double dz, double fromMetres, double toMetres) {
+        double e = dx, n = -dz, u = dy; // jME axes (east, up, south) to ENU
+        double horizontal = Math.hypot(e, n);
+        double to = Math.min(toMetres, horizontal > 0 ? rangeMetres / horizontal : Double.POSITIVE_INFINITY);
+        if (!(fromMetres > 0 && to > fromMetres) || (to - fromMetres) * horizontal > STRAIGHT_PATH_METRES) {
+            return Double.NaN;
+        }
+        return trianglesBetween(e, n, u, fromMetres, to, new double[POINT], Double.NaN);
     }
 
     @Override
@@ -137,13 +156,20 @@ public final class TerrainRayProbe implements RayProbe {
         }
         a = bracket[0];
         double ca = bracket[1], b = bracket[2], cb = bracket[3];
+        // The bracket is a piece of the ray within a cell (or less): the drawn triangles around it decide, as
+        // below, without first narrowing it. Only where none of them is met is the crossing of the search's
+        // surface narrowed down to the tolerance and taken.
+        double onDrawn = onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb, Double.NaN);
+        if (!Double.isNaN(onDrawn)) {
+            return onDrawn;
+        }
         // Illinois regula falsi: the clearance is close to linear along the ray within a triangle.
         int side = 0;
         for (int i = 0; i < 100 && b - a > TOLERANCE * b; i++) {
             double m = Math.max(a, Math.min(b, (a * cb - b * ca) / (cb - ca)));
             double cm = clearance(e, n, u, m, pb);
             if (Double.isNaN(cm) || cm == 0) {
-                return onTriangles(e, n, u, m, horizontalShare, pb);
+                return onTriangles(e, n, u, m, horizontalShare, pb, m);
             }
             if (cm > 0) {
                 a = m;
@@ -161,7 +187,7 @@ public final class TerrainRayProbe implements RayProbe {
                 side = -1;
             }
         }
-        return onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb);
+        return onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb, 0.5 * (a + b));
     }
 
     /**
@@ -169,42 +195,61 @@ public final class TerrainRayProbe implements RayProbe {
      * between vertices placed in 3-D (the search's clearance interpolates heights in latitude and
      * longitude instead, which differs by millimetres to centimetres on steep cells: at grazing
      * incidence metres of distance). The ray is intersected with the triangles of the cells around
-     * the approximate crossing, a cell and a half either way; the nearest hit there wins, else the approximation.
+     * the approximate crossing, a cell and a half either way; the nearest hit there wins, else {@code otherwise}
+     * (the approximation itself, or NaN to say that none was met).
      */
-    private double onTriangles(double e, double n, double u, double approximate, double horizontalShare, double[] scratch) {
+    private double onTriangles(double e, double n, double u, double approximate, double horizontalShare, double[] scratch,
+                               double otherwise) {
         double window = 1.5 * cellStepMetres / horizontalShare;
-        double from = Math.max(1e-3, approximate - window), to = approximate + window;
+        return trianglesBetween(e, n, u, Math.max(1e-3, approximate - window), approximate + window, scratch, otherwise);
+    }
+
+    /**
+     * The nearest hit of the ray (ENU direction) on the drawn triangles of the cells it passes over between
+     * {@code from} and {@code to} metres (a straight path in rows and columns, with a margin of 0.05 cells), else
+     * {@code otherwise}; {@code otherwise} too when the stretch leaves the mosaic or is longer than
+     * {@link #MAX_PATH_SAMPLES} quarter cells.
+     */
+    private double trianglesBetween(double e, double n, double u, double from, double to, double[] scratch, double otherwise) {
         clearance(e, n, u, from, scratch);
         double rowA = scratch[ROW], colA = scratch[COL];
         clearance(e, n, u, to, scratch);
         double rowB = scratch[ROW], colB = scratch[COL];
         int r0 = (int) Math.floor(Math.min(rowA, rowB) - 0.05), r1 = (int) Math.floor(Math.max(rowA, rowB) + 0.05);
         int c0 = (int) Math.floor(Math.min(colA, colB) - 0.05), c1 = (int) Math.floor(Math.max(colA, colB) + 0.05);
-        if (r0 < 0 || c0 < 0 || r1 + 1 >= mosaic.rows() || c1 + 1 >= mosaic.cols() || (r1 - r0 + 2) * (c1 - c0 + 2) > 4096) {
-            return approximate;
+        // The cells along the path (a straight line in rows and columns), with their neighbours across an edge the
+        // path runs along, nearest first.
+        int samples = (int) Math.ceil(4 * (Math.abs(rowB - rowA) + Math.abs(colB - colA))) + 2;
+        if (r0 < 0 || c0 < 0 || r1 + 1 >= mosaic.rows() || c1 + 1 >= mosaic.cols() || samples > MAX_PATH_SAMPLES) {
+            return otherwise;
         }
-        // Vertex positions of the rectangle, computed once each (a vertex serves four cells).
-        int vertexCols = c1 - c0 + 2;
-        double[] vertices = new double[3 * (r1 - r0 + 2) * vertexCols];
-        java.util.Arrays.fill(vertices, Double.NaN);
+        // Recently placed vertices and visited cells, direct-mapped by grid index: a vertex serves four cells, and
+        // the path meets a cell again at its next samples. A collision costs a recomputation of the same value.
+        long[] vertexKey = new long[CACHE_SLOTS], cellKey = new long[CACHE_SLOTS];
+        java.util.Arrays.fill(vertexKey, -1);
+        java.util.Arrays.fill(cellKey, -1);
+        double[] vertexAt = new double[3 * CACHE_SLOTS];
         double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3], tri = new double[9];
         double best = Double.POSITIVE_INFINITY;
-        // The cells along the path (a straight line in rows and columns over these few cells), with
-        // their neighbours across an edge the path runs along.
-        int samples = (int) Math.ceil(4 * (Math.abs(rowB - rowA) + Math.abs(colB - colA))) + 2;
-        boolean[] done = new boolean[(r1 - r0 + 1) * (c1 - c0 + 1)];
+        // Past a hit, cells two cells' length of ray farther on hold only farther hits: the walk stops there.
+        double beyond = 2 * cellLongestMetres / Math.max(Math.hypot(e, n), 0.01);
         for (int i = 0; i <= samples; i++) {
             double f = (double) i / samples, row = rowA + f * (rowB - rowA), col = colA + f * (colB - colA);
+            if (from + f * (to - from) > best + beyond) {
+                break;
+            }
             for (int k = 0; k < 4; k++) {
                 int r = (int) Math.floor(row + ((k & 1) == 0 ? -0.05 : 0.05)), c = (int) Math.floor(col + ((k & 2) == 0 ? -0.05 : 0.05));
-                if (r < r0 || r > r1 || c < c0 || c > c1 || done[(r - r0) * (c1 - c0 + 1) + (c - c0)]) {
+                long cell = (long) r * mosaic.cols() + c;
+                int slot = (int) (cell & (CACHE_SLOTS - 1));
+                if (r < r0 || r > r1 || c < c0 || c > c1 || cellKey[slot] == cell) {
                     continue;
                 }
-                done[(r - r0) * (c1 - c0 + 1) + (c - c0)] = true;
-                vertex(r, c, r0, c0, vertexCols, vertices, nw);
-                vertex(r, c + 1, r0, c0, vertexCols, vertices, ne);
-                vertex(r + 1, c, r0, c0, vertexCols, vertices, sw);
-                vertex(r + 1, c + 1, r0, c0, vertexCols, vertices, se);
+                cellKey[slot] = cell;
+                vertex(r, c, vertexKey, vertexAt, nw);
+                vertex(r, c + 1, vertexKey, vertexAt, ne);
+                vertex(r + 1, c, vertexKey, vertexAt, sw);
+                vertex(r + 1, c + 1, vertexKey, vertexAt, se);
                 double t1, t2;
                 if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
                     t1 = rayTriangle(e, n, u, nw, ne, se, tri);
@@ -219,21 +264,28 @@ public final class TerrainRayProbe implements RayProbe {
                 }
             }
         }
-        return best < Double.POSITIVE_INFINITY ? best : approximate;
+        return best < Double.POSITIVE_INFINITY ? best : otherwise;
     }
 
-    /** Vertex (r, c)'s position as the reference places it, from the rectangle's store (filled on first use). */
-    private void vertex(int r, int c, int r0, int c0, int vertexCols, double[] store, double[] out) {
-        int o = 3 * ((r - r0) * vertexCols + (c - c0));
-        if (Double.isNaN(store[o])) {
+    /** Slots of {@link #trianglesBetween}'s vertex and cell caches (a power of two). */
+    private static final int CACHE_SLOTS = 64;
+    /** Longest path {@link #trianglesBetween} walks, in samples of a quarter cell. */
+    private static final int MAX_PATH_SAMPLES = 4096;
+
+    /** Vertex (r, c)'s position as the reference places it, from the cache where it is there. */
+    private void vertex(int r, int c, long[] keys, double[] positions, double[] out) {
+        long key = (long) r * mosaic.cols() + c;
+        int slot = (int) (key & (CACHE_SLOTS - 1)), o = 3 * slot;
+        if (keys[slot] != key) {
             surface.position(r, c, out);
-            store[o] = out[0];
-            store[o + 1] = out[1];
-            store[o + 2] = out[2];
+            keys[slot] = key;
+            positions[o] = out[0];
+            positions[o + 1] = out[1];
+            positions[o + 2] = out[2];
         } else {
-            out[0] = store[o];
-            out[1] = store[o + 1];
-            out[2] = store[o + 2];
+            out[0] = positions[o];
+            out[1] = positions[o + 1];
+            out[2] = positions[o + 2];
         }
     }
 
@@ -303,10 +355,8 @@ public final class TerrainRayProbe implements RayProbe {
                 continue;
             }
             int count = edgeCrossings(anchor, anchorT, t, t1, crossings);
-            double previous = t, cPrevious = ct;
-            if (previous != anchorT) {
-                cPrevious = clearance(e, n, u, previous, scratch);
-            }
+            // The clearance at the step's start (proven above) is computed only if the bracket needs it.
+            double previous = t, cPrevious = previous == anchorT ? ct : Double.NaN; // NaN: above, not computed
             for (int i = 0; i <= count; i++) {
                 double tc = i < count ? crossings[i] : t1;
                 double c = clearance(e, n, u, tc, scratch);
@@ -314,6 +364,9 @@ public final class TerrainRayProbe implements RayProbe {
                     return new double[] {Double.POSITIVE_INFINITY}; // off the mosaic: nothing drawn there
                 }
                 if (c <= 0) {
+                    if (Double.isNaN(cPrevious)) {
+                        cPrevious = clearance(e, n, u, previous, new double[POINT]);
+                    }
                     return new double[] {previous, cPrevious, tc, c};
                 }
                 previous = tc;
@@ -356,9 +409,9 @@ public final class TerrainRayProbe implements RayProbe {
             }
             return true;
         }
-        int cells = BLOCK_CELLS[level];
-        for (int br = r0 / cells; br <= r1 / cells; br++) {
-            for (int bc = c0 / cells; bc <= c1 / cells; bc++) {
+        int shift = BLOCK_SHIFT[level]; // r >> shift = r / cells (r ≥ 0), without a division
+        for (int br = r0 >> shift, brEnd = r1 >> shift; br <= brEnd; br++) {
+            for (int bc = c0 >> shift, bcEnd = c1 >> shift; bc <= bcEnd; bc++) {
                 if (blockMaximum(level, br, bc) >= ceiling) {
                     return false;
                 }

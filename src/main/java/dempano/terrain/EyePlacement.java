@@ -51,8 +51,7 @@ public final class EyePlacement {
         double cx = rx - heightMetres * up[0] - footRelative[0];
         double cy = ry - heightMetres * up[1] - footRelative[1];
         double cz = rz - heightMetres * up[2] - footRelative[2];
-        double r2 = 2 * Ellipsoid.MEAN_RADIUS_METRES;
-        double ground = r2 * Math.asin(Math.min(1, Math.sqrt(cx * cx + cy * cy + cz * cz) / r2));
+        double ground = dempano.geo.Refraction.groundDistanceFromChordMetres(Math.sqrt(cx * cx + cy * cy + cz * cz));
         double lift = liftPerSquareMetre * ground * ground;
         rx += lift * up[0];
         ry += lift * up[1];

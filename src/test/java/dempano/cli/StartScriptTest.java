@@ -60,6 +60,24 @@ class StartScriptTest {
         assertEquals(1L << 30, given);
     }
 
+    /**
+     * A panorama or a batch runs on the client compiler alone (a third less time from the shell on two cores); a photo
+     * and the fly-through keep both compilers; JAVA_OPTS overrides.
+     */
+    @Test
+    void panoramasAndBatchesRunOnTheClientCompilerAloneUnlessJavaOptsSaysOtherwise() throws Exception {
+        assertEquals(1, tieredStopAtLevel(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version")[1]));
+        assertEquals(1, tieredStopAtLevel(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "batch", "--help")[1]));
+        assertEquals(4, tieredStopAtLevel(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "photo", "--help")[1]));
+        assertEquals(4, tieredStopAtLevel(run(Map.of("JAVA_OPTS", "-XX:TieredStopAtLevel=4 -XX:+PrintFlagsFinal"), "--version")[1]));
+    }
+
+    private static int tieredStopAtLevel(String flagsFinal) {
+        Matcher m = Pattern.compile("\\bTieredStopAtLevel\\s+=\\s+(\\d+)").matcher(flagsFinal);
+        assertTrue(m.find(), "TieredStopAtLevel among the flags");
+        return Integer.parseInt(m.group(1));
+    }
+
     static final Path ARCHIVE = Path.of("build", "install", "dempano", "lib", "dempano.jsa");
     static final String SHARED = "source: shared objects file";
 

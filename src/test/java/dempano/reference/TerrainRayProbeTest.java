@@ -72,6 +72,38 @@ class TerrainRayProbeTest {
         }
     }
 
+    /**
+     * The stretch intersection against the same closed form: within a stretch that holds the hit it gives the hit
+     * (and, to the bit, what the search gives); a stretch short of the hit, one longer than it walks, and one
+     * reversed give NaN.
+     */
+    @Test
+    void nearestHitBetweenMeetsTheFlatDemWhereTheSearchDoes() {
+        double range = 40_000;
+        TerrainRayProbe probe = planeProbe(1500, new Refraction(0), range);
+        LocalFrame frame = new LocalFrame(46.5, 8.5, 2000);
+        double[] origin = new double[3];
+        frame.enuToEcef(0, 0, 0, origin);
+        for (double elDeg : new double[] {-45, -10, -5, -4, -3}) {
+            for (double azDeg = 10; azDeg < 360; azDeg += 45) {
+                double el = Math.toRadians(elDeg), az = Math.toRadians(azDeg);
+                double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
+                double[] dir = new double[3];
+                EllipsoidRay.enuDirectionToEcef(frame, origin, e, n, u, new double[3], dir);
+                double truth = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 500, Ellipsoid.B_METRES + 500);
+                String where = "elevation " + elDeg + "°, azimuth " + azDeg + "°";
+                double between = probe.nearestHitBetweenMetres(e, u, -n, 0.98 * truth, 1.02 * truth);
+                assertEquals(truth, between, 2e-6 * truth, where);
+                assertEquals(probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth), between, 0.0, where);
+                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 0.5 * truth, 0.99 * truth)), where + ": short of it");
+                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 1.01 * truth, 0.99 * truth)), where + ": reversed");
+                double tooLong = (TerrainRayProbe.STRAIGHT_PATH_METRES + 10) / Math.cos(el);
+                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, truth - tooLong / 2, truth + tooLong / 2)),
+                        where + ": longer than a straight path");
+            }
+        }
+    }
+
     @Test
     void findsACrestOneSampleRowWide() {
         // A plane at 500 m with a crest one sample row wide (800 m) 5.0 km north of the eye, cells

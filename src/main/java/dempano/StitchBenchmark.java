@@ -1,0 +1,80 @@
+package dempano;
+
+import dempano.dem.DemDirectory;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * The stitch alone, timed: renders a panorama once (GL), keeps what its stitch was given, and runs
+ * {@link dempano.panorama.Stitcher#stitch} again on it several times. Reports the process's CPU time
+ * per stitch (all threads: robust to other processes on the machine, unlike wall time) and wall
+ * time, minimum, median and maximum, and a checksum of the distance map (equal checksums: the same
+ * map, bit for bit). {@code gradle stitchBench -Pscene=washington|srtm3 -Pruns=N}.
+ *
+ * <p>Arguments: {@code --dem DIR --lat DEG --lon DEG --range-km KM --ppd PPD --runs N}.
+ */
+public final class StitchBenchmark {
+    private StitchBenchmark() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path dem = Path.of(arg(args, "--dem", "../shared/dem"));
+        double lat = Double.parseDouble(arg(args, "--lat", "44.2706")), lon = Double.parseDouble(arg(args, "--lon", "-71.3033"));
+        double rangeKm = Double.parseDouble(arg(args, "--range-km", "100"));
+        double ppd = Double.parseDouble(arg(args, "--ppd", "20"));
+        int runs = Integer.parseInt(arg(args, "--runs", "7"));
+        AtomicReference<PanoramaRenderer.StitchInputs> kept = new AtomicReference<>();
+        PanoramaRenderer.stitchTap = kept::set;
+        PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd);
+        try (PanoramaRenderer r = PanoramaRenderer.open(new DemDirectory(dem, 64))) {
+            r.render(req);
+        } finally {
+            PanoramaRenderer.stitchTap = null;
+        }
+        PanoramaRenderer.StitchInputs in = kept.get();
+        int pixels = in.target().widthPx() * in.target().heightPx();
+        var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+        List<double[]> times = new ArrayList<>();
+        String checksum = null;
+        dempano.panorama.Stitcher.Result result = null;
+        for (int i = 0; i < runs + 1; i++) { // the first run warms the JIT and is not counted
+            int[] argb = in.colour() ? new int[pixels] : null;
+            float[] distance = new float[pixels];
+            long c0 = os.getProcessCpuTime(), w0 = System.nanoTime();
+            result = dempano.panorama.Stitcher.stitch(in.target(), in.layout(), in.captures(), in.inverseEyeDepth(), in.exact(),
+                    argb, distance);
+            long c1 = os.getProcessCpuTime(), w1 = System.nanoTime();
+            if (i > 0) {
+                times.add(new double[] {(c1 - c0) / 1e6, (w1 - w0) / 1e6});
+            }
+            String sum = Integer.toHexString(Arrays.hashCode(distance)) + (argb == null ? "" : "/" + Integer.toHexString(Arrays.hashCode(argb)));
+            if (checksum != null && !checksum.equals(sum)) {
+                throw new IllegalStateException("the stitch is not deterministic: " + checksum + " then " + sum);
+            }
+            checksum = sum;
+        }
+        double[] cpu = times.stream().mapToDouble(t -> t[0]).sorted().toArray();
+        double[] wall = times.stream().mapToDouble(t -> t[1]).sorted().toArray();
+        System.out.printf(Locale.ROOT, "%d×%d px, %d runs after one warm-up; %s%n", in.target().widthPx(), in.target().heightPx(),
+                runs, result);
+        System.out.println("| stitch | min ms | median ms | max ms |");
+        System.out.println("|---|---:|---:|---:|");
+        System.out.printf(Locale.ROOT, "| CPU (process, all threads) | %.0f | %.0f | %.0f |%n", cpu[0], cpu[cpu.length / 2], cpu[cpu.length - 1]);
+        System.out.printf(Locale.ROOT, "| wall | %.0f | %.0f | %.0f |%n", wall[0], wall[wall.length / 2], wall[wall.length - 1]);
+        System.out.println("checksum (distance/colour): " + checksum);
+    }
+
+    private static String arg(String[] args, String name, String fallback) {
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals(name)) {
+                return args[i + 1];
+            }
+        }
+        return fallback;
+    }
+}
