@@ -71,10 +71,29 @@ public final class OffscreenRenderer {
      */
     public static synchronized Handle acquire() {
         if (shared == null || shared.closed) {
+            awaitEnd(lastGlThread);
             shared = open();
         }
         shared.users++;
         return new Handle(shared);
+    }
+
+    /**
+     * The GL thread of the last context started (guarded by the class lock). A context ends on its GL thread with
+     * glfwTerminate, which would end a context created meanwhile under its feet ("Failed to create display"): a new
+     * context first waits for that thread, whether its context was closed, broken by an Error or never made.
+     */
+    private static Thread lastGlThread;
+
+    private static void awaitEnd(Thread t) {
+        if (t == null || t == Thread.currentThread()) {
+            return;
+        }
+        try {
+            t.join(TimeUnit.SECONDS.toMillis(START_TIMEOUT_SECONDS));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static synchronized void release(OffscreenRenderer r) {
@@ -136,13 +155,16 @@ public final class OffscreenRenderer {
         try {
             info = app.ready.get(START_TIMEOUT_SECONDS, TimeUnit.SECONDS);
         } catch (ExecutionException e) {
+            lastGlThread = app.glThread;
             app.stop(false);
             throw new GlUnavailableException("cannot create an OpenGL context (" + e.getCause().getMessage() + "); "
                     + GlPlatform.hint(), e.getCause());
         } catch (TimeoutException | InterruptedException e) {
+            lastGlThread = app.glThread;
             app.stop(false);
             throw new GlUnavailableException("no OpenGL context after " + START_TIMEOUT_SECONDS + " s; " + GlPlatform.hint(), e);
         }
+        lastGlThread = app.glThread;
         return new OffscreenRenderer(app, info[0], info[1]);
     }
 
@@ -401,6 +423,9 @@ public final class OffscreenRenderer {
         public void handleError(String errMsg, Throwable t) {
             // jME would log and carry on (exit code 0); make the failure reach the caller instead.
             LOG.log(Level.FINE, errMsg, t);
+            if (glThread == null) {
+                glThread = Thread.currentThread(); // a context that failed to start: it still ends GLFW on this thread
+            }
             if (ready.isDone() && fatal == null) {
                 fatal = t != null ? t : new IllegalStateException(errMsg);
             }
