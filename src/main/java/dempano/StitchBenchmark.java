@@ -7,27 +7,41 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /**
  * The stitch alone, timed: renders a panorama once (GL), keeps what its stitch was given, and runs
  * {@link dempano.panorama.Stitcher#stitch} again on it several times. Reports the process's CPU time
  * per stitch (all threads: robust to other processes on the machine, unlike wall time) and wall
  * time, minimum, median and maximum, and a checksum of the distance map (equal checksums: the same
- * map, bit for bit). {@code gradle stitchBench -Pscene=washington|srtm3 -Pruns=N}.
- *
- * <p>Arguments: {@code --dem DIR --lat DEG --lon DEG --range-km KM --ppd PPD --runs N}.
+ * map, bit for bit). {@code gradle stitchBench -Pruns=N} (Mount Washington, 100 km, 20 px/°; the options
+ * below choose another scene when run directly).
  */
-public final class StitchBenchmark {
-    private StitchBenchmark() {
+@Command(name = "stitch-bench", mixinStandardHelpOptions = true, description = "Times the stitch alone on one render.")
+public final class StitchBenchmark implements Callable<Integer> {
+    @Option(names = "--dem", description = "DEM folder (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
+    Path dem;
+    @Option(names = "--lat", description = "Viewpoint, degrees north (default: ${DEFAULT-VALUE}, Mount Washington).", defaultValue = "44.2706")
+    double lat;
+    @Option(names = "--lon", description = "Viewpoint, degrees east (default: ${DEFAULT-VALUE}).", defaultValue = "-71.3033")
+    double lon;
+    @Option(names = "--range-km", description = "Range of sight, km (default: ${DEFAULT-VALUE}).", defaultValue = "100")
+    double rangeKm;
+    @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}).", defaultValue = "20")
+    double ppd;
+    @Option(names = "--runs", description = "Timed stitches after one warm-up (default: ${DEFAULT-VALUE}).", defaultValue = "7")
+    int runs;
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new StitchBenchmark()).execute(args));
     }
 
-    public static void main(String[] args) throws Exception {
-        Path dem = Path.of(arg(args, "--dem", "../shared/dem"));
-        double lat = Double.parseDouble(arg(args, "--lat", "44.2706")), lon = Double.parseDouble(arg(args, "--lon", "-71.3033"));
-        double rangeKm = Double.parseDouble(arg(args, "--range-km", "100"));
-        double ppd = Double.parseDouble(arg(args, "--ppd", "20"));
-        int runs = Integer.parseInt(arg(args, "--runs", "7"));
+    @Override
+    public Integer call() throws Exception {
         AtomicReference<PanoramaRenderer.StitchInputs> kept = new AtomicReference<>();
         PanoramaRenderer.stitchTap = kept::set;
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd);
@@ -67,14 +81,6 @@ public final class StitchBenchmark {
         System.out.printf(Locale.ROOT, "| CPU (process, all threads) | %.0f | %.0f | %.0f |%n", cpu[0], cpu[cpu.length / 2], cpu[cpu.length - 1]);
         System.out.printf(Locale.ROOT, "| wall | %.0f | %.0f | %.0f |%n", wall[0], wall[wall.length / 2], wall[wall.length - 1]);
         System.out.println("checksum (distance/colour): " + checksum);
-    }
-
-    private static String arg(String[] args, String name, String fallback) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return args[i + 1];
-            }
-        }
-        return fallback;
+        return 0;
     }
 }

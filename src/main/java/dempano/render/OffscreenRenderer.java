@@ -155,16 +155,15 @@ public final class OffscreenRenderer {
         try {
             info = app.ready.get(START_TIMEOUT_SECONDS, TimeUnit.SECONDS);
         } catch (ExecutionException e) {
-            lastGlThread = app.glThread;
             app.stop(false);
             throw new GlUnavailableException("cannot create an OpenGL context (" + e.getCause().getMessage() + "); "
                     + GlPlatform.hint(), e.getCause());
         } catch (TimeoutException | InterruptedException e) {
-            lastGlThread = app.glThread;
             app.stop(false);
             throw new GlUnavailableException("no OpenGL context after " + START_TIMEOUT_SECONDS + " s; " + GlPlatform.hint(), e);
+        } finally {
+            lastGlThread = app.glThread; // made, failed or late: a next context waits for this thread (see acquire)
         }
-        lastGlThread = app.glThread;
         return new OffscreenRenderer(app, info[0], info[1]);
     }
 

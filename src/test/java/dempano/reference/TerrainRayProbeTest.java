@@ -48,28 +48,41 @@ class TerrainRayProbeTest {
         assertTrue(worst < 1e-6, "closed form vs iterative height above the surface differ by " + worst + " m");
     }
 
-    @Test
-    void hitsAFlatDemWhereTheRayMeetsTheEllipsoidLiftedToItsHeight() {
-        // With k = 0 the plane DEM at 500 m is the ellipsoid raised by 500 m along the normal, which
-        // is not an ellipsoid; but within 20 km the two differ by far less than a millimetre at these
-        // incidences, so the ray against an ellipsoid with a and b each 500 m larger is the truth.
-        double range = 40_000;
-        TerrainRayProbe probe = planeProbe(1500, new Refraction(0), range);
+    /** A ray from the eye of {@link #planeProbe} (1500 m above the plane DEM), with where it truly meets the plane. */
+    @FunctionalInterface
+    private interface PlaneRayCheck {
+        /** e, n, u: ENU unit direction; truthMetres: the closed-form hit; where: the ray, for messages. */
+        void check(double el, double e, double n, double u, double truthMetres, String where);
+    }
+
+    /**
+     * Every ray at elevations −45°…−3° and azimuths azimuthStartDeg + k·45°, with its closed-form hit: with k = 0 the
+     * plane DEM at 500 m is the ellipsoid raised by 500 m along the normal, which is not an ellipsoid; but within
+     * 20 km the two differ by far less than a millimetre at these incidences, so the ray against an ellipsoid with
+     * a and b each 500 m larger is the truth.
+     */
+    private static void forPlaneRays(double azimuthStartDeg, PlaneRayCheck check) {
         LocalFrame frame = new LocalFrame(46.5, 8.5, 2000);
         double[] origin = new double[3];
         frame.enuToEcef(0, 0, 0, origin);
         for (double elDeg : new double[] {-45, -10, -5, -4, -3}) {
-            for (double azDeg = 0; azDeg < 360; azDeg += 45) {
+            for (double azDeg = azimuthStartDeg; azDeg < 360; azDeg += 45) {
                 double el = Math.toRadians(elDeg), az = Math.toRadians(azDeg);
                 double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
                 double[] dir = new double[3];
                 EllipsoidRay.enuDirectionToEcef(frame, origin, e, n, u, new double[3], dir);
                 double truth = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 500, Ellipsoid.B_METRES + 500);
-                // jME axes: east, up, south.
-                double probed = probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth);
-                assertEquals(truth, probed, 2e-6 * truth, "elevation " + elDeg + "°, azimuth " + azDeg + "°");
+                check.check(el, e, n, u, truth, "elevation " + elDeg + "°, azimuth " + azDeg + "°");
             }
         }
+    }
+
+    @Test
+    void hitsAFlatDemWhereTheRayMeetsTheEllipsoidLiftedToItsHeight() {
+        TerrainRayProbe probe = planeProbe(1500, new Refraction(0), 40_000);
+        forPlaneRays(0, (el, e, n, u, truth, where) ->
+                // jME axes: east, up, south.
+                assertEquals(truth, probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth), 2e-6 * truth, where));
     }
 
     /**
@@ -79,29 +92,17 @@ class TerrainRayProbeTest {
      */
     @Test
     void nearestHitBetweenMeetsTheFlatDemWhereTheSearchDoes() {
-        double range = 40_000;
-        TerrainRayProbe probe = planeProbe(1500, new Refraction(0), range);
-        LocalFrame frame = new LocalFrame(46.5, 8.5, 2000);
-        double[] origin = new double[3];
-        frame.enuToEcef(0, 0, 0, origin);
-        for (double elDeg : new double[] {-45, -10, -5, -4, -3}) {
-            for (double azDeg = 10; azDeg < 360; azDeg += 45) {
-                double el = Math.toRadians(elDeg), az = Math.toRadians(azDeg);
-                double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
-                double[] dir = new double[3];
-                EllipsoidRay.enuDirectionToEcef(frame, origin, e, n, u, new double[3], dir);
-                double truth = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 500, Ellipsoid.B_METRES + 500);
-                String where = "elevation " + elDeg + "°, azimuth " + azDeg + "°";
-                double between = probe.nearestHitBetweenMetres(e, u, -n, 0.98 * truth, 1.02 * truth);
-                assertEquals(truth, between, 2e-6 * truth, where);
-                assertEquals(probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth), between, 0.0, where);
-                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 0.5 * truth, 0.99 * truth)), where + ": short of it");
-                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 1.01 * truth, 0.99 * truth)), where + ": reversed");
-                double tooLong = (TerrainRayProbe.STRAIGHT_PATH_METRES + 10) / Math.cos(el);
-                assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, truth - tooLong / 2, truth + tooLong / 2)),
-                        where + ": longer than a straight path");
-            }
-        }
+        TerrainRayProbe probe = planeProbe(1500, new Refraction(0), 40_000);
+        forPlaneRays(10, (el, e, n, u, truth, where) -> {
+            double between = probe.nearestHitBetweenMetres(e, u, -n, 0.98 * truth, 1.02 * truth);
+            assertEquals(truth, between, 2e-6 * truth, where);
+            assertEquals(probe.firstHitMetres(e, u, -n, 0.5 * truth, 2 * truth), between, 0.0, where);
+            assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 0.5 * truth, 0.99 * truth)), where + ": short of it");
+            assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, 1.01 * truth, 0.99 * truth)), where + ": reversed");
+            double tooLong = (TerrainRayProbe.STRAIGHT_PATH_METRES + 10) / Math.cos(el);
+            assertTrue(Double.isNaN(probe.nearestHitBetweenMetres(e, u, -n, truth - tooLong / 2, truth + tooLong / 2)),
+                    where + ": longer than a straight path");
+        });
     }
 
     @Test
