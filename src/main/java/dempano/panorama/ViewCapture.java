@@ -7,9 +7,9 @@ package dempano.panorama;
  * @param rgba         colour, 4 bytes a pixel; null when colour was not rendered
  * @param depth        per pixel: the depth-buffer value (STANDARD_24, REVERSED_32F) or the range in
  *                     metres written by the shader (SHADER_RANGE, ≤ 0 where nothing was drawn)
- * @param triangleIds  per pixel, which triangle was seen there: its number in the scene (the
- *                     terrain's numbering, see {@code TerrainBuilder.triangleBases}), −1 for sky;
- *                     null when not read
+ * @param triangleIds  per pixel, which triangle was seen there: twice its provoking vertex's number
+ *                     in the scene (see {@code TerrainBuilder.VERTEX_BASE}) plus 1 when seen from
+ *                     its back, resolved by {@code SeenTriangleResolver}; −1 for sky; null when not read
  */
 public record ViewCapture(int view, byte[] rgba, float[] depth, int[] triangleIds) {
     /** A capture without surface identities. */

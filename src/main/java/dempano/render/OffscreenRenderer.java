@@ -496,6 +496,7 @@ public final class OffscreenRenderer {
             FloatBuffer depth = ByteBuffer.allocateDirect(w * h * 4).order(ByteOrder.nativeOrder()).asFloatBuffer();
             IntBuffer rangeAndTriangle = surfaces
                     ? ByteBuffer.allocateDirect(w * h * 8).order(ByteOrder.nativeOrder()).asIntBuffer() : null;
+            int[] pairs = surfaces ? new int[2 * w * h] : null;
             try {
                 for (int k = 0; k < layout.views(); k++) {
                     if (layout.ring()) {
@@ -541,13 +542,14 @@ public final class OffscreenRenderer {
                         GL11.glReadBuffer(GL30.GL_COLOR_ATTACHMENT1);
                         rangeAndTriangle.clear();
                         GL11.glReadPixels(0, 0, w, h, GL30.GL_RG_INTEGER, GL11.GL_UNSIGNED_INT, rangeAndTriangle);
+                        rangeAndTriangle.get(pairs); // one bulk copy: the loop below then reads a heap array
                         triangleIds = new int[w * h];
                         for (int i = 0, o = 0; i < w * h; i++, o += 2) {
-                            float range = Float.intBitsToFloat(rangeAndTriangle.get(o));
+                            float range = Float.intBitsToFloat(pairs[o]);
                             if (readRangeTarget) {
                                 d[i] = range;
                             }
-                            triangleIds[i] = range > 0 ? rangeAndTriangle.get(o + 1) : -1;
+                            triangleIds[i] = range > 0 ? pairs[o + 1] : -1;
                         }
                     }
                     if (!readRangeTarget || !surfaces) {

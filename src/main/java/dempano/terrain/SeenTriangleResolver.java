@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.stream.IntStream;
 
 /**
- * Turns the views' per-sample surface identities (the scene's triangle numbers; see
- * {@link ViewCapture#triangleIds()} and {@link TerrainBuilder#triangleBases}) into
- * {@link SeenTriangles}: each distinct triangle seen, its
+ * Turns the views' per-sample surface names (see {@link ViewCapture#triangleIds()} and
+ * {@link TerrainBuilder#VERTEX_BASE}: the provoking vertex's number in the scene and the facing)
+ * into {@link SeenTriangles}: each distinct triangle seen, its
  * vertices read from the geometry's own buffers (ECEF double-single, exact to micrometres) and
  * placed as the shader places them, in double precision ({@link EyePlacement#place}). Must run while
  * the geometries' buffers are alive (before they are released).
@@ -24,20 +24,22 @@ public final class SeenTriangleResolver {
     }
 
     /**
-     * @param drawn       the scene's geometries, in the order of their {@link TerrainBuilder#TRIANGLE_BASE}
+     * @param drawn       the scene's geometries, in the order of their {@link TerrainBuilder#VERTEX_BASE}
      * @param captures    views read with surfaces
      * @param placement   the eye the scene was drawn for
      * @param rangeMetres the shader's range cut
      * @throws IllegalArgumentException when a capture carries no surface identities
+     * @throws IllegalStateException    when a mesh breaks {@link TerrainBuilder#VERTEX_BASE}'s contract
+     *                                  (a vertex last in three triangles or more)
      */
     public static SeenTriangles resolve(List<Geometry> drawn, ViewCapture[] captures, EyePlacement placement,
                                         double rangeMetres) {
-        int[] bases = TerrainBuilder.triangleBases(drawn);
-        int total = bases[drawn.size()];
-        int[][] compactOf = new int[drawn.size()][]; // per geometry: primitive → compact index, −1 unseen
-        int[][] triangleOfSample = new int[captures.length][];
-        int[] seenGeometry = new int[1024], seenPrimitive = new int[1024];
-        int seen = 0;
+        int[] bases = TerrainBuilder.vertexBases(drawn);
+        long totalNames = 2L * bases[drawn.size()];
+        int[][] keyOf = new int[drawn.size()][]; // per geometry: name − 2·base → key index, −1 unseen
+        int[][] keyOfSample = new int[captures.length][];
+        int[] keyGeometry = new int[1024], keyName = new int[1024];
+        int keys = 0;
         for (int k = 0; k < captures.length; k++) {
             ViewCapture c = captures[k];
             if (c.triangleIds() == null) {
@@ -46,33 +48,81 @@ public final class SeenTriangleResolver {
             int[] ids = c.triangleIds();
             int[] out = new int[ids.length];
             int g = 0; // the geometry of the previous sample: neighbours mostly share one
+            int previousId = -1, previousKey = -1; // and mostly one triangle
             for (int i = 0; i < ids.length; i++) {
                 int id = ids[i];
-                // An id outside the scene (never expected) is treated as unknown, not trusted.
-                if (id < 0 || id >= total) {
+                // A name outside the scene (never expected) is treated as unknown, not trusted.
+                if (id < 0 || id >= totalNames) {
                     out[i] = -1;
                     continue;
                 }
-                if (id < bases[g] || id >= bases[g + 1]) {
-                    g = geometryOf(bases, id);
+                if (id == previousId) {
+                    out[i] = previousKey;
+                    continue;
                 }
-                int p = id - bases[g];
-                int[] map = compactOf[g];
+                int vertex = id >>> 1;
+                if (vertex < bases[g] || vertex >= bases[g + 1]) {
+                    g = geometryOf(bases, vertex);
+                }
+                int name = id - 2 * bases[g];
+                int[] map = keyOf[g];
                 if (map == null) {
-                    map = compactOf[g] = new int[bases[g + 1] - bases[g]];
+                    map = keyOf[g] = new int[2 * (bases[g + 1] - bases[g])];
                     Arrays.fill(map, -1);
                 }
-                int t = map[p];
-                if (t < 0) {
-                    if (seen == seenGeometry.length) {
-                        seenGeometry = Arrays.copyOf(seenGeometry, seen * 2);
-                        seenPrimitive = Arrays.copyOf(seenPrimitive, seen * 2);
+                int key = map[name];
+                if (key < 0) {
+                    if (keys == keyGeometry.length) {
+                        keyGeometry = Arrays.copyOf(keyGeometry, keys * 2);
+                        keyName = Arrays.copyOf(keyName, keys * 2);
                     }
-                    seenGeometry[seen] = g;
-                    seenPrimitive[seen] = p;
-                    t = map[p] = seen++;
+                    keyGeometry[keys] = g;
+                    keyName[keys] = name;
+                    key = map[name] = keys++;
                 }
-                out[i] = t;
+                out[i] = key;
+                previousId = id;
+                previousKey = key;
+            }
+            keyOfSample[k] = out;
+        }
+        Buffers[] buffers = new Buffers[drawn.size()];
+        IntStream.range(0, drawn.size()).parallel().filter(g -> keyOf[g] != null)
+                .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
+        // Each name to the triangle it names (−1 for none: never expected).
+        int[] kg = keyGeometry, kn = keyName;
+        int[] primitiveOfKey = new int[keys];
+        double[] eye = placement.eyeEcef();
+        IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key], placement, eye));
+        // Distinct triangles, numbered compactly.
+        int[][] compactOf = new int[drawn.size()][]; // per geometry: primitive → compact index, −1 unseen
+        int[] compactOfKey = new int[keys];
+        int[] seenGeometry = new int[Math.max(1, keys)], seenPrimitive = new int[Math.max(1, keys)];
+        int seen = 0;
+        for (int key = 0; key < keys; key++) {
+            int g = kg[key], p = primitiveOfKey[key];
+            if (p < 0) {
+                compactOfKey[key] = -1;
+                continue;
+            }
+            int[] map = compactOf[g];
+            if (map == null) {
+                map = compactOf[g] = new int[buffers[g].triangles];
+                Arrays.fill(map, -1);
+            }
+            int t = map[p];
+            if (t < 0) {
+                seenGeometry[seen] = g;
+                seenPrimitive[seen] = p;
+                t = map[p] = seen++;
+            }
+            compactOfKey[key] = t;
+        }
+        int[][] triangleOfSample = new int[captures.length][];
+        for (int k = 0; k < captures.length; k++) {
+            int[] out = keyOfSample[k];
+            for (int i = 0; i < out.length; i++) {
+                out[i] = out[i] < 0 ? -1 : compactOfKey[out[i]];
             }
             triangleOfSample[k] = out;
         }
@@ -83,12 +133,6 @@ public final class SeenTriangleResolver {
             fullResolution[g] = Boolean.TRUE.equals(drawn.get(g).getUserData(TerrainBuilder.FULL_RESOLUTION));
         }
         int[] sg = seenGeometry, sp = seenPrimitive;
-        Buffers[] buffers = new Buffers[drawn.size()];
-        for (int g = 0; g < drawn.size(); g++) {
-            if (compactOf[g] != null) {
-                buffers[g] = new Buffers(drawn.get(g).getMesh());
-            }
-        }
         IntStream.range(0, seen).parallel().forEach(t -> {
             double[] ecef = new double[3], up = new double[3], v = new double[9];
             Buffers b = buffers[sg[t]];
@@ -130,16 +174,126 @@ public final class SeenTriangleResolver {
         return lo;
     }
 
-    /** A mesh's buffers in the layout {@link TerrainBuilder} writes (read with absolute gets: thread-safe). */
+    /**
+     * A mesh's buffers in the layout {@link TerrainBuilder} writes (read with absolute gets:
+     * thread-safe once built), and which triangles end on each vertex.
+     */
     private static final class Buffers {
         final FloatBuffer high, low, up;
         final IndexBuffer index;
+        final int triangles;
+        /** Per vertex, the (at most two) triangles it is the last vertex of, in index order; −1 for none. */
+        private final int[] lastOf;
 
         Buffers(Mesh mesh) {
             high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
             low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
             up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
             index = mesh.getIndexBuffer();
+            triangles = index.size() / 3;
+            lastOf = new int[2 * mesh.getVertexCount()];
+            Arrays.fill(lastOf, -1);
+            for (int p = 0; p < triangles; p++) {
+                int v = index.get(3 * p + 2);
+                if (lastOf[2 * v] < 0) {
+                    lastOf[2 * v] = p;
+                } else if (lastOf[2 * v + 1] < 0) {
+                    lastOf[2 * v + 1] = p;
+                } else {
+                    throw new IllegalStateException("vertex " + v + " is the last vertex of three triangles or more ("
+                            + lastOf[2 * v] + ", " + lastOf[2 * v + 1] + ", " + p + "): the shader's names are ambiguous");
+                }
+            }
+        }
+
+        /**
+         * The triangle a name (twice the provoking vertex, plus 1 when seen from its back) names:
+         * the vertex's only triangle, or of its two (wound oppositely) the one that shows the eye
+         * the side it was seen from; where both or neither do (the eye above one's plane and below
+         * the other's, or in one's plane), the one wound counter-clockwise seen from above when
+         * seen from the front, the clockwise one when from the back (terrain is mostly seen from
+         * above). −1 when the vertex ends no triangle.
+         */
+        int triangleNamed(int name, EyePlacement placement, double[] eye) {
+            int v = name >>> 1;
+            int first = lastOf[2 * v], second = lastOf[2 * v + 1];
+            if (second < 0) {
+                return first;
+            }
+            boolean back = (name & 1) != 0;
+            // GL's rule: wound counter-clockwise on screen is the front.
+            double f = facingTheEye(first, placement, eye), s = facingTheEye(second, placement, eye);
+            boolean firstFits = back ? f < 0 : f > 0, secondFits = back ? s < 0 : s > 0;
+            if (firstFits != secondFits) {
+                return firstFits ? first : second;
+            }
+            double a = windingSeenFromAbove(first), b = windingSeenFromAbove(second);
+            if (a > 0 && b < 0) {
+                return back ? second : first;
+            }
+            if (a < 0 && b > 0) {
+                return back ? first : second;
+            }
+            return first; // a degenerate cell (beyond the mosaic's edge), or walls edge-on: either serves
+        }
+
+        /**
+         * The sign of {@link #facingTheEyePlaced}, from the vertices as stored (ECEF, no lift) where
+         * that is beyond doubt: refraction lifts a vertex d metres away by k·d²/2R, which moves a
+         * triangle's plane at the eye by less than 4·|k|·d²/2R (lift and tilt); only closer to the
+         * plane than that (grazing incidence) are the vertices placed as the shader places them.
+         *
+         * @param eye the eye, ECEF metres
+         */
+        private double facingTheEye(int p, EyePlacement placement, double[] eye) {
+            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
+            double ax = at(high, low, 3 * a), ay = at(high, low, 3 * a + 1), az = at(high, low, 3 * a + 2);
+            double e1x = at(high, low, 3 * b) - ax, e1y = at(high, low, 3 * b + 1) - ay, e1z = at(high, low, 3 * b + 2) - az;
+            double e2x = at(high, low, 3 * c) - ax, e2y = at(high, low, 3 * c + 1) - ay, e2z = at(high, low, 3 * c + 2) - az;
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            double tx = eye[0] - ax, ty = eye[1] - ay, tz = eye[2] - az;
+            double facing = nx * tx + ny * ty + nz * tz;
+            double squared = tx * tx + ty * ty + tz * tz;
+            double doubt = (4 * Math.abs(placement.liftPerSquareMetre()) * squared + 1)
+                    * Math.sqrt(nx * nx + ny * ny + nz * nz);
+            return Math.abs(facing) > doubt ? facing : facingTheEyePlaced(p, placement);
+        }
+
+        /**
+         * Positive when a triangle, placed for the eye, turns its front (the side from which it is
+         * wound counter-clockwise) to the eye; negative for its back, 0 edge-on.
+         */
+        private double facingTheEyePlaced(int p, EyePlacement placement) {
+            double[] v = new double[9], ecef = new double[3], normal = new double[3];
+            for (int corner = 0; corner < 3; corner++) {
+                int vertex = index.get(3 * p + corner);
+                for (int a = 0; a < 3; a++) {
+                    ecef[a] = at(high, low, 3 * vertex + a);
+                    normal[a] = up.get(4 * vertex + a);
+                }
+                placement.place(ecef, normal, up.get(4 * vertex + 3), v, 3 * corner);
+            }
+            double e1x = v[3] - v[0], e1y = v[4] - v[1], e1z = v[5] - v[2];
+            double e2x = v[6] - v[0], e2y = v[7] - v[1], e2z = v[8] - v[2];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            return -(nx * v[0] + ny * v[1] + nz * v[2]); // n · (eye − first vertex), the eye at the origin
+        }
+
+        /**
+         * Positive for a triangle wound counter-clockwise seen from above (along its first vertex's
+         * ellipsoid normal), negative for clockwise, 0 for none (degenerate). ECEF in double.
+         */
+        private double windingSeenFromAbove(int p) {
+            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
+            double ax = at(high, low, 3 * a), ay = at(high, low, 3 * a + 1), az = at(high, low, 3 * a + 2);
+            double e1x = at(high, low, 3 * b) - ax, e1y = at(high, low, 3 * b + 1) - ay, e1z = at(high, low, 3 * b + 2) - az;
+            double e2x = at(high, low, 3 * c) - ax, e2y = at(high, low, 3 * c + 1) - ay, e2z = at(high, low, 3 * c + 2) - az;
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            return nx * up.get(4 * a) + ny * up.get(4 * a + 1) + nz * up.get(4 * a + 2);
+        }
+
+        private static double at(FloatBuffer high, FloatBuffer low, int i) {
+            return high.get(i) + (double) low.get(i);
         }
 
         /**

@@ -18,6 +18,7 @@ uniform float m_MeanRadius;
 out vec3 vNormal;
 out float vElevation;
 flat out int vFlags;      // not interpolated: a triangle takes its provoking vertex's flags
+flat out int vVertex;     // the provoking vertex's number in its geometry (see Terrain.frag)
 
 void main() {
     precise vec3 rel = (inPosition - m_EyeHigh) + (inTexCoord2 - m_EyeLow);
@@ -29,5 +30,6 @@ void main() {
     vNormal = m_EcefToEye * inNormal;
     vElevation = inTexCoord.x;
     vFlags = int(inTexCoord.y + 0.5);
+    vVertex = gl_VertexID;
     gl_Position = g_ViewProjectionMatrix * vec4(vPosition, 1.0);
 }

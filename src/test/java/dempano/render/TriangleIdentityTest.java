@@ -27,8 +27,9 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 /**
- * The triangle the shader names for each view sample ({@code TriangleBase + gl_PrimitiveID}, read
- * back as RG32UI and resolved by {@link SeenTriangleResolver}) is the one that sample's own centre
+ * The triangle the shader names for each view sample (its provoking vertex, {@code VertexBase +
+ * gl_VertexID}, and its facing, read back as RG32UI and resolved by {@link SeenTriangleResolver})
+ * is the one that sample's own centre
  * ray meets: intersected in double precision, the named triangle gives the range the shader wrote
  * beside it. Real scenes with full-resolution, simplified and merged patches and their skirts.
  */
@@ -64,7 +65,7 @@ class TriangleIdentityTest {
             OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, DepthMode.SHADER_RANGE, 1,
                     rangeMetres * 1.1 + 20_000, false, true, true, false);
             ViewCapture[] captures = gl.render(terrain.root(), request, new long[2]);
-            int[] bases = TerrainBuilder.triangleBases(terrain.drawn());
+            int[] bases = TerrainBuilder.vertexBases(terrain.drawn());
             assertEquals(terrain.drawn().size(), bases.length - 1);
             Set<Integer> geometriesSeen = new HashSet<>();
             SeenTriangles seen = SeenTriangleResolver.resolve(terrain.drawn(), captures, new EyePlacement(eye, refraction),
@@ -82,7 +83,7 @@ class TriangleIdentityTest {
                         continue;
                     }
                     terrainSamples++;
-                    int g = Arrays.binarySearch(bases, ids[i]);
+                    int g = Arrays.binarySearch(bases, ids[i] >>> 1);
                     geometriesSeen.add(g >= 0 ? g : -g - 2);
                     double x = layout.xTanOfPixel(i % layout.widthPx()), y = layout.yTanOfPixel(i / layout.widthPx());
                     double east = a[0] * x + a[3] * y + a[6], north = a[1] * x + a[4] * y + a[7];

@@ -176,4 +176,79 @@ class TerrainBuilderTest {
             assertTrue(!drawn.contains(g), "an evicted geometry is not in the scene being drawn");
         }
     }
+
+    /**
+     * The contract the shader's sample names rest on ({@link TerrainBuilder#VERTEX_BASE}): every
+     * vertex is the last of at most two triangles; of two terrain triangles one is wound
+     * counter-clockwise seen from above and the other clockwise; of two skirt triangles (vertical
+     * walls) the fronts face opposite ways. Full-resolution, simplified and merged patches, skirts.
+     */
+    @Test
+    void everyVertexEndsAtMostTwoTrianglesWoundOppositely() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 60_000, null);
+        int levels = 0;
+        for (int n : t.patchesPerLevel()) {
+            levels += n > 0 ? 1 : 0;
+        }
+        assertTrue(levels >= 3, java.util.Arrays.toString(t.patchesPerLevel()));
+        long pairs = 0, skirtPairs = 0, single = 0;
+        for (com.jme3.scene.Geometry g : t.drawn()) {
+            com.jme3.scene.Mesh mesh = g.getMesh();
+            java.nio.FloatBuffer high = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.Position).getData();
+            java.nio.FloatBuffer low = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.TexCoord2).getData();
+            java.nio.FloatBuffer up = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.TexCoord3).getData();
+            com.jme3.scene.mesh.IndexBuffer index = mesh.getIndexBuffer();
+            int triangles = index.size() / 3;
+            int[][] endingAt = new int[mesh.getVertexCount()][];
+            for (int p = 0; p < triangles; p++) {
+                int v = index.get(3 * p + 2);
+                int[] list = endingAt[v];
+                endingAt[v] = list == null ? new int[] {p} : new int[] {list[0], p};
+                assertTrue(list == null || list.length == 1, "vertex " + v + " ends three triangles or more in " + g.getName());
+            }
+            for (int[] list : endingAt) {
+                if (list == null) {
+                    continue;
+                }
+                if (list.length == 1) {
+                    single++;
+                    continue;
+                }
+                double[] n0 = normal(index, high, low, list[0]), n1 = normal(index, high, low, list[1]);
+                int v = index.get(3 * list[0] + 2);
+                double up0 = n0[0] * up.get(4 * v) + n0[1] * up.get(4 * v + 1) + n0[2] * up.get(4 * v + 2);
+                double up1 = n1[0] * up.get(4 * v) + n1[1] * up.get(4 * v + 1) + n1[2] * up.get(4 * v + 2);
+                double length0 = Math.sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
+                double length1 = Math.sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
+                if (length0 == 0 || length1 == 0) {
+                    continue; // a degenerate cell beyond the mosaic's edge (rows or columns repeated)
+                }
+                boolean wall = Math.abs(up0) < 1e-3 * length0; // a skirt: vertical
+                if (wall) {
+                    skirtPairs++;
+                    assertTrue(n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2] < 0, "a skirt's two walls face one way in " + g.getName());
+                } else {
+                    pairs++;
+                    assertTrue(up0 * up1 < 0, "two terrain triangles ending at vertex " + v + " wound alike in " + g.getName());
+                }
+            }
+        }
+        assertTrue(pairs > single, pairs + " pairs, " + single + " single");
+        assertTrue(skirtPairs > 0, "skirts seen");
+    }
+
+    /** A triangle's normal by the right-hand rule over its drawn order (ECEF, double). */
+    private static double[] normal(com.jme3.scene.mesh.IndexBuffer index, java.nio.FloatBuffer high, java.nio.FloatBuffer low, int p) {
+        double[][] v = new double[3][3];
+        for (int c = 0; c < 3; c++) {
+            int k = index.get(3 * p + c);
+            for (int a = 0; a < 3; a++) {
+                v[c][a] = high.get(3 * k + a) + (double) low.get(3 * k + a);
+            }
+        }
+        double[] e1 = {v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
+        double[] e2 = {v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
+        return new double[] {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    }
 }
