@@ -443,7 +443,8 @@ public final class Stitcher {
                     + w3 * (rgba[o3 + 1] & 0xff);
             double b = w0 * (rgba[o0 + 2] & 0xff) + w1 * (rgba[o1 + 2] & 0xff) + w2 * (rgba[o2 + 2] & 0xff)
                     + w3 * (rgba[o3 + 2] & 0xff);
-            return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
+            // The channels are ≥ 0, so adding ½ and truncating rounds half up as Math.round does (faster: no floor).
+            return 0xff000000 | ((int) (r + 0.5) << 16) | ((int) (gr + 0.5) << 8) | (int) (b + 0.5);
         }
         double r = 0, gr = 0, b = 0;
         for (int k = 0; k < 4; k++) {
@@ -454,7 +455,7 @@ public final class Stitcher {
             gr += w * (rgba[o + 1] & 0xff);
             b += w * (rgba[o + 2] & 0xff);
         }
-        return 0xff000000 | ((int) Math.round(r) << 16) | ((int) Math.round(gr) << 8) | (int) Math.round(b);
+        return 0xff000000 | ((int) (r + 0.5) << 16) | ((int) (gr + 0.5) << 8) | (int) (b + 0.5);
     }
 
     private static float nearestRange(float[] range, ViewLayout l, double px, double py) {
