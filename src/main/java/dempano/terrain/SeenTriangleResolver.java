@@ -35,67 +35,54 @@ public final class SeenTriangleResolver {
     public static SeenTriangles resolve(List<Geometry> drawn, ViewCapture[] captures, EyePlacement placement,
                                         double rangeMetres) {
         int[] bases = TerrainBuilder.vertexBases(drawn);
-        long totalNames = 2L * bases[drawn.size()];
-        int[][] keyOf = new int[drawn.size()][]; // per geometry: name − 2·base → key index, −1 unseen
-        int[][] keyOfSample = new int[captures.length][];
-        int[] keyGeometry = new int[1024], keyName = new int[1024];
-        int keys = 0;
+        int totalNames = 2 * bases[drawn.size()]; // below 2^31: vertexBases allows under 2^30 vertices
         for (int k = 0; k < captures.length; k++) {
-            ViewCapture c = captures[k];
-            if (c.triangleIds() == null) {
+            if (captures[k].triangleIds() == null) {
                 throw new IllegalArgumentException("view " + k + " was read without surface identities");
             }
-            int[] ids = c.triangleIds();
-            int[] out = new int[ids.length];
-            int g = 0; // the geometry of the previous sample: neighbours mostly share one
-            int previousId = -1, previousKey = -1; // and mostly one triangle
-            for (int i = 0; i < ids.length; i++) {
-                int id = ids[i];
-                // A name outside the scene (never expected) is treated as unknown, not trusted.
-                if (id < 0 || id >= totalNames) {
-                    out[i] = -1;
-                    continue;
+        }
+        // 1. The names seen, per view in parallel (every writer writes 1: the races are benign, and the
+        // stream's end makes the writes visible). A name outside the scene (never expected) is not trusted.
+        int[] keyOfName = new int[totalNames];
+        IntStream.range(0, captures.length).parallel().forEach(k -> {
+            int previous = -1; // neighbouring samples mostly share a triangle
+            for (int id : captures[k].triangleIds()) {
+                if (id != previous && id >= 0 && id < totalNames) {
+                    keyOfName[id] = 1;
+                    previous = id;
                 }
-                if (id == previousId) {
-                    out[i] = previousKey;
-                    continue;
-                }
-                int vertex = id >>> 1;
-                if (vertex < bases[g] || vertex >= bases[g + 1]) {
-                    g = geometryOf(bases, vertex);
-                }
-                int name = id - 2 * bases[g];
-                int[] map = keyOf[g];
-                if (map == null) {
-                    map = keyOf[g] = new int[2 * (bases[g + 1] - bases[g])];
-                    Arrays.fill(map, -1);
-                }
-                int key = map[name];
-                if (key < 0) {
-                    if (keys == keyGeometry.length) {
-                        keyGeometry = Arrays.copyOf(keyGeometry, keys * 2);
-                        keyName = Arrays.copyOf(keyName, keys * 2);
-                    }
-                    keyGeometry[keys] = g;
-                    keyName[keys] = name;
-                    key = map[name] = keys++;
-                }
-                out[i] = key;
-                previousId = id;
-                previousKey = key;
             }
-            keyOfSample[k] = out;
+        });
+        // 2. Keys in the order of the names (so the numbering does not depend on the threads), with their geometries.
+        int keys = 0;
+        for (int name = 0; name < totalNames; name++) {
+            if (keyOfName[name] != 0) {
+                keyOfName[name] = ++keys; // key + 1, so that 0 stays "unseen"
+            }
+        }
+        int[] keyName = new int[keys], keyGeometry = new int[keys];
+        boolean[] geometrySeen = new boolean[drawn.size()];
+        for (int name = 0, g = 0; name < totalNames; name++) {
+            if (keyOfName[name] != 0) {
+                while ((name >>> 1) >= bases[g + 1]) {
+                    g++;
+                }
+                int key = keyOfName[name] - 1;
+                keyGeometry[key] = g;
+                keyName[key] = name - 2 * bases[g];
+                geometrySeen[g] = true;
+            }
         }
         Buffers[] buffers = new Buffers[drawn.size()];
-        IntStream.range(0, drawn.size()).parallel().filter(g -> keyOf[g] != null)
+        IntStream.range(0, drawn.size()).parallel().filter(g -> geometrySeen[g])
                 .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
-        // Each name to the triangle it names (−1 for none: never expected).
+        // 3. Each name to the triangle it names (−1 for none: never expected).
         int[] kg = keyGeometry, kn = keyName;
         int[] primitiveOfKey = new int[keys];
         double[] eye = placement.eyeEcef();
         IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key], placement, eye));
-        // Distinct triangles, numbered compactly.
-        int[][] compactOf = new int[drawn.size()][]; // per geometry: primitive → compact index, −1 unseen
+        // 4. Distinct triangles, numbered compactly. A triangle is named only through its last vertex
+        // (names 2v and 2v + 1), so its keys are adjacent: comparing with the key before finds repeats.
         int[] compactOfKey = new int[keys];
         int[] seenGeometry = new int[Math.max(1, keys)], seenPrimitive = new int[Math.max(1, keys)];
         int seen = 0;
@@ -103,29 +90,25 @@ public final class SeenTriangleResolver {
             int g = kg[key], p = primitiveOfKey[key];
             if (p < 0) {
                 compactOfKey[key] = -1;
-                continue;
-            }
-            int[] map = compactOf[g];
-            if (map == null) {
-                map = compactOf[g] = new int[buffers[g].triangles];
-                Arrays.fill(map, -1);
-            }
-            int t = map[p];
-            if (t < 0) {
+            } else if (seen > 0 && seenGeometry[seen - 1] == g && seenPrimitive[seen - 1] == p) {
+                compactOfKey[key] = seen - 1;
+            } else {
                 seenGeometry[seen] = g;
                 seenPrimitive[seen] = p;
-                t = map[p] = seen++;
+                compactOfKey[key] = seen++;
             }
-            compactOfKey[key] = t;
         }
+        // 5. Each sample's triangle, per view in parallel.
         int[][] triangleOfSample = new int[captures.length][];
-        for (int k = 0; k < captures.length; k++) {
-            int[] out = keyOfSample[k];
-            for (int i = 0; i < out.length; i++) {
-                out[i] = out[i] < 0 ? -1 : compactOfKey[out[i]];
+        IntStream.range(0, captures.length).parallel().forEach(k -> {
+            int[] ids = captures[k].triangleIds();
+            int[] out = new int[ids.length];
+            for (int i = 0; i < ids.length; i++) {
+                int id = ids[i];
+                out[i] = id >= 0 && id < totalNames ? compactOfKey[keyOfName[id] - 1] : -1;
             }
             triangleOfSample[k] = out;
-        }
+        });
         double[] corners = new double[seen * 9];
         boolean[] skirt = new boolean[seen], simplified = new boolean[seen];
         boolean[] fullResolution = new boolean[drawn.size()];
