@@ -410,10 +410,14 @@ public final class PanoramaRenderer implements AutoCloseable {
         float[] distance = new float[pixels];
         boolean exact = drawn.seen() != null;
         if (req.distance()) {
-            float[][] inverseEyeDepth = new float[captures.length][];
-            for (int k = 0; k < captures.length; k++) {
-                inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), drawn.nearMetres(),
-                        drawn.farMetres());
+            // With exact distances on the shader's range, the stitcher converts the few samples it needs itself.
+            float[][] inverseEyeDepth = null;
+            if (!exact || req.depthMode() != DepthMode.SHADER_RANGE) {
+                inverseEyeDepth = new float[captures.length][];
+                for (int k = 0; k < captures.length; k++) {
+                    inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), drawn.nearMetres(),
+                            drawn.farMetres());
+                }
             }
             Stitcher.Exact exactInputs = exact ? new Stitcher.Exact(drawn.seen(), new TerrainRayProbe(scene.mosaic(), scene.eye(),
                     req.refraction(), req.rangeMetres())) : null;

@@ -73,7 +73,9 @@ public final class Stitcher {
     /**
      * Builds colour and distance for every panorama pixel.
      *
-     * @param inverseEyeDepth per view, from {@link #inverseEyeDepths}
+     * @param inverseEyeDepth per view, from {@link #inverseEyeDepths}; null with exact distances on
+     *                 captures whose depth is the shader's range (SHADER_RANGE): the samples the
+     *                 exact rule still needs it for are then converted where asked, to the same bits
      * @param exact    the triangles the views saw and the terrain to probe where they fail (exact
      *                 per-pixel rays), or null for the inverse-depth rule everywhere
      * @param argbOut  receives colour, row-major, row 0 at the top; null to skip colour
@@ -91,7 +93,11 @@ public final class Stitcher {
      */
     public static Result stitch(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                 Exact exact, int[] argbOut, float[] rangeOut) {
-        return resample(target, layout, captures, java.util.Objects.requireNonNull(inverseEyeDepth), exact, argbOut, rangeOut);
+        if (inverseEyeDepth == null && exact == null) {
+            throw new NullPointerException("inverse eye depths are needed without exact distances");
+        }
+        return resample(target, layout, captures, new InverseDepths(captures, layout, inverseEyeDepth), exact, argbOut,
+                rangeOut);
     }
 
     /**
@@ -124,6 +130,62 @@ public final class Stitcher {
     }
 
     /**
+     * Inverse eye depth of view samples, 1/metres (0 for sky): {@link #inverseEyeDepths}'s arrays where given;
+     * else converted from the shader's range (SHADER_RANGE) only where asked, to the bit what
+     * {@link #inverseEyeDepths} gives, since with exact distances few pixels ask (about 1 %: converting every
+     * sample of every view cost 30–125 ms a panorama). Thread-safe.
+     */
+    private static final class InverseDepths {
+        private final float[][] given;
+        private final ViewCapture[] captures;
+        private final ViewLayout layout;
+        private final double[] xx, yy1;
+        private final float[][] converted;
+
+        InverseDepths(ViewCapture[] captures, ViewLayout layout, float[][] given) {
+            this.given = given;
+            this.captures = captures;
+            this.layout = layout;
+            xx = new double[layout.widthPx()];
+            yy1 = new double[layout.heightPx()];
+            if (given == null) { // the factors inverseEyeDepths applies, in its arithmetic
+                for (int x = 0; x < xx.length; x++) {
+                    double t = layout.xTanOfPixel(x);
+                    xx[x] = t * t;
+                }
+                for (int y = 0; y < yy1.length; y++) {
+                    double t = layout.yTanOfPixel(y);
+                    yy1[y] = 1 + t * t;
+                }
+            }
+            converted = new float[captures.length][];
+        }
+
+        /** Sample i (row-major, GL rows) of a view. */
+        float at(int view, int i) {
+            if (given != null) {
+                return given[view][i];
+            }
+            float d = captures[view].depth()[i];
+            int w = xx.length;
+            return d > 0 && d < Float.POSITIVE_INFINITY ? (float) (Math.sqrt(yy1[i / w] + xx[i % w]) / d) : 0f;
+        }
+
+        /** A whole view (for the inverse-depth rule), converted on first use where not given. */
+        float[] of(int view) {
+            if (given != null) {
+                return given[view];
+            }
+            synchronized (converted) {
+                if (converted[view] == null) {
+                    converted[view] = inverseEyeDepths(captures[view], layout, DepthMode.SHADER_RANGE, 0, 0);
+                }
+                return converted[view];
+            }
+        }
+    }
+
+    /**
      * Below this sine of incidence (about 1.1°) a simplified patch's triangle's hit is searched again
      * on the full-resolution surface ({@link RayProbe}): there a sag of the simplified surface of
      * d·ε·sin θ would be a relative distance error ε. A full-resolution patch's triangle is kept:
@@ -141,8 +203,8 @@ public final class Stitcher {
     /** Interleaved stripes of rows the per-pixel walk is split into, for the parallel stream to balance. */
     static final int ROW_STRIPES = 64;
 
-    /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range. */
-    private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
+    /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range (colour only). */
+    private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth,
                                    Exact exact, int[] argbOut, float[] rangeOut) {
         SeenTriangles seen = exact == null ? null : exact.seen();
         RayProbe probe = exact == null ? null : exact.probe();
@@ -211,13 +273,13 @@ public final class Stitcher {
                             }
                         } else if (!Double.isNaN(r)) {
                             rowExact++;
-                        } else if (probe != null && centralSpan(inverseEyeDepth[view], layout, p, span)
+                        } else if (probe != null && centralSpan(inverseEyeDepth, view, layout, p, span)
                                 && !Double.isNaN(r = probe.nearestHitBetweenMetres(dx, dy, dz, span[0] * (1 - SPAN_MARGIN),
                                         span[1] * (1 + SPAN_MARGIN)))) {
                             rowProbed++; // met on the surface between the central samples' own hits: no search needed
                         } else if (probe != null
                                 && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
-                                        Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth[view], layout, p)),
+                                        Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
                                         2 * hint[2] + 500))
                                 && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
                             rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
@@ -229,7 +291,7 @@ public final class Stitcher {
                             rowFallback++;
                         }
                     }
-                    rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth[view], layout, p, scratch) : r);
+                    rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth.of(view), layout, p, scratch) : r);
                 }
             }
             exactCount.add(rowExact);
@@ -254,14 +316,14 @@ public final class Stitcher {
      *            farthest of the central samples' eye depths
      * @return false where one of the central samples is sky or beyond the view's edge
      */
-    static boolean centralSpan(float[] inv, ViewLayout l, double[] p, double[] out) {
+    static boolean centralSpan(InverseDepths inv, int view, ViewLayout l, double[] p, double[] out) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         if (x0 < 0 || y0 < 0 || x0 + 1 >= l.widthPx() || y0 + 1 >= l.heightPx()) {
             return false;
         }
         float lo = Float.POSITIVE_INFINITY, hi = 0;
         for (int k = 0; k < 4; k++) {
-            float v = inv[(y0 + (k >> 1)) * l.widthPx() + x0 + (k & 1)];
+            float v = inv.at(view, (y0 + (k >> 1)) * l.widthPx() + x0 + (k & 1));
             if (!(v > 0)) {
                 return false;
             }
@@ -285,12 +347,12 @@ public final class Stitcher {
      * Distance along the ray of view point p = {px, py, xTan, yTan} at which it reaches the eye depth
      * of the nearest of the 4×4 view samples around it, metres (0 when none saw terrain).
      */
-    static double nearestSeenMetres(float[] inv, ViewLayout l, double[] p) {
+    static double nearestSeenMetres(InverseDepths inv, int view, ViewLayout l, double[] p) {
         int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
         float nearest = 0; // the largest inverse eye depth
         for (int y = Math.max(0, y0 - 1), ye = Math.min(l.heightPx() - 1, y0 + 2); y <= ye; y++) {
             for (int x = Math.max(0, x0 - 1), xe = Math.min(l.widthPx() - 1, x0 + 2); x <= xe; x++) {
-                nearest = Math.max(nearest, inv[y * l.widthPx() + x]);
+                nearest = Math.max(nearest, inv.at(view, y * l.widthPx() + x));
             }
         }
         return nearest > 0 ? DepthLinearizer.rangeFromEyeDepth(1 / nearest, p[2], p[3]) : 0;
