@@ -21,9 +21,31 @@ package dempano.panorama;
  *                           triangle seen there, −1 where nothing was drawn (sky)
  * @param rangeMetres        the range cut: a point farther than this horizontally from the eye
  *                           (√(x² + z²)) is not drawn, as in the shader
+ * @param normals            per triangle 4 doubles: the cross product of its two edges and that
+ *                           vector's length (for {@link #incidenceSine}, asked per pixel)
  */
 public record SeenTriangles(double[] corners, boolean[] skirt, boolean[] simplified, int[][] triangleOfSample,
-                            double rangeMetres) {
+                            double rangeMetres, double[] normals) {
+    /** With the normals computed from the corners. */
+    public SeenTriangles(double[] corners, boolean[] skirt, boolean[] simplified, int[][] triangleOfSample,
+                         double rangeMetres) {
+        this(corners, skirt, simplified, triangleOfSample, rangeMetres, normalsOf(corners));
+    }
+
+    private static double[] normalsOf(double[] c) {
+        double[] out = new double[c.length / 9 * 4];
+        java.util.stream.IntStream.range(0, c.length / 9).parallel().forEach(t -> {
+            int o = t * 9, q = t * 4;
+            double e1x = c[o + 3], e1y = c[o + 4], e1z = c[o + 5], e2x = c[o + 6], e2y = c[o + 7], e2z = c[o + 8];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            out[q] = nx;
+            out[q + 1] = ny;
+            out[q + 2] = nz;
+            out[q + 3] = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        });
+        return out;
+    }
+
     /**
      * Relative tolerance on the barycentric coordinates: a ray through a shared edge hits one of
      * its two triangles whatever the rounding (the nearer hit is kept, and both are at one distance).
@@ -89,11 +111,8 @@ public record SeenTriangles(double[] corners, boolean[] skirt, boolean[] simplif
      * at grazing incidence, where a small error of the surface's height is a large error of distance.
      */
     public double incidenceSine(int triangle, double dx, double dy, double dz) {
-        double[] c = corners;
-        int o = triangle * 9;
-        double e1x = c[o + 3], e1y = c[o + 4], e1z = c[o + 5], e2x = c[o + 6], e2y = c[o + 7], e2z = c[o + 8];
-        double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        return length > 0 ? Math.abs(nx * dx + ny * dy + nz * dz) / length : 0;
+        int q = triangle * 4;
+        double length = normals[q + 3];
+        return length > 0 ? Math.abs(normals[q] * dx + normals[q + 1] * dy + normals[q + 2] * dz) / length : 0;
     }
 }

@@ -237,8 +237,13 @@ public final class Stitcher {
                         rangeOut[i] = Float.NaN;
                         continue;
                     }
+                    // With exact distances: all 4×4 samples around are sky (the top terrain rows say so cheaply).
+                    boolean sky = seen != null && inverseEyeDepth != null
+                            && skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]));
                     if (argbOut != null) {
-                        argbOut[i] = bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
+                        // Sky all around: the four samples hold the one clear colour, which the blend gives back exactly.
+                        argbOut[i] = sky ? texel(captures[view].rgba(), layout, p[0], p[1])
+                                : bilinearColour(captures[view].rgba(), layout, p[0], p[1]);
                     }
                     if (inverseEyeDepth == null) {
                         rangeOut[i] = nearestRange(captures[view].depth(), layout, p[0], p[1]);
@@ -248,7 +253,7 @@ public final class Stitcher {
                     if (seen != null) {
                         // The pixel's own ray in the eye's frame (jME axes: east, up, south).
                         double dx = ray[0], dy = ray[1], dz = ray[2];
-                        if (skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]))) {
+                        if (sky) {
                             r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
                         } else {
                             r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
@@ -490,6 +495,12 @@ public final class Stitcher {
 
     private static int clampY(ViewLayout l, int y) {
         return Math.max(0, Math.min(l.heightPx() - 1, y));
+    }
+
+    /** The colour of the sample at the floor of (px, py), clamped into the view, as {@link #bilinearColour} packs it. */
+    static int texel(byte[] rgba, ViewLayout l, double px, double py) {
+        int o = (clampY(l, (int) Math.floor(py)) * l.widthPx() + clampX(l, (int) Math.floor(px))) * 4;
+        return 0xff000000 | (rgba[o] & 0xff) << 16 | (rgba[o + 1] & 0xff) << 8 | rgba[o + 2] & 0xff;
     }
 
     static int bilinearColour(byte[] rgba, ViewLayout l, double px, double py) {
