@@ -49,4 +49,31 @@ class BilinearColourTest {
         int expected = 0xff000000 | (rgba[o] & 0xff) << 16 | (rgba[o + 1] & 0xff) << 8 | (rgba[o + 2] & 0xff);
         assertEquals(expected, Stitcher.bilinearColour(rgba, layout, 7, 5));
     }
+
+    /**
+     * Where all samples around are sky, the stitcher takes one sample's colour ({@link Stitcher#texel}) instead of
+     * blending: that must be what the blend gives, for every colour and position (inside the view and beyond
+     * its edges), since the weights sum to 1 within rounding far below half a level.
+     */
+    @Test
+    void fourEqualSamplesBlendToThatSampleExactly() {
+        int w = 29, h = 17;
+        ViewLayout layout = new ViewLayout(8, w, h, 0.6, -0.6);
+        Random random = new Random(15);
+        byte[] rgba = new byte[w * h * 4];
+        for (int i = 0; i < 20_000; i++) {
+            if (i % 100 == 0) {
+                byte r = (byte) random.nextInt(256), g = (byte) random.nextInt(256), b = (byte) random.nextInt(256);
+                for (int k = 0; k < w * h; k++) {
+                    rgba[4 * k] = r;
+                    rgba[4 * k + 1] = g;
+                    rgba[4 * k + 2] = b;
+                    rgba[4 * k + 3] = (byte) 255;
+                }
+            }
+            double px = -1 + (w + 1) * random.nextDouble(), py = -1 + (h + 1) * random.nextDouble();
+            assertEquals(Stitcher.bilinearColour(rgba, layout, px, py), Stitcher.texel(rgba, layout, px, py),
+                    "at " + px + ", " + py);
+        }
+    }
 }
