@@ -143,20 +143,6 @@ public final class SeenTriangleResolver {
         return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
     }
 
-    /** The geometry g with bases[g] ≤ id < bases[g + 1] (0 ≤ id < the total; empty geometries skipped). */
-    static int geometryOf(int[] bases, int id) {
-        int lo = 0, hi = bases.length - 2; // the answer lies in [lo, hi]
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (bases[mid] <= id) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo;
-    }
-
     /**
      * A mesh's buffers in the layout {@link TerrainBuilder} writes (read with absolute gets:
      * thread-safe once built), and which triangles end on each vertex.
@@ -164,7 +150,6 @@ public final class SeenTriangleResolver {
     private static final class Buffers {
         final FloatBuffer high, low, up;
         final IndexBuffer index;
-        final int triangles;
         /** Per vertex, the (at most two) triangles it is the last vertex of, in index order; −1 for none. */
         private final int[] lastOf;
 
@@ -173,7 +158,7 @@ public final class SeenTriangleResolver {
             low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
             up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
             index = mesh.getIndexBuffer();
-            triangles = index.size() / 3;
+            int triangles = index.size() / 3;
             lastOf = new int[2 * mesh.getVertexCount()];
             Arrays.fill(lastOf, -1);
             for (int p = 0; p < triangles; p++) {
