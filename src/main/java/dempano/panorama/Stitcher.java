@@ -222,8 +222,7 @@ public final class Stitcher {
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per stripe, not per pixel
             double[] p = new double[4];
             double[] ray = new double[3];
-            int[] candidates = new int[16];
-            double[] hint = new double[5];
+            ExactHint hint = new ExactHint();
             double[] span = new double[2];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
             for (int row = stripe; row < height; row += stripes) {
@@ -256,9 +255,9 @@ public final class Stitcher {
                         if (sky) {
                             r = Double.POSITIVE_INFINITY; // all 4×4 samples around are sky, so no candidate
                         } else {
-                            r = exactRange(seen, seen.triangleOfSample()[view], layout, p[0], p[1], dx, dy, dz, candidates, hint);
+                            r = exactRange(seen, seen.triangleOfSample()[view], layout, p, ray, hint);
                         }
-                        if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint[3] < GRAZING_SINE && hint[4] > 0
+                        if (!Double.isNaN(r) && r < Double.POSITIVE_INFINITY && hint.incidenceSine < GRAZING_SINE && hint.simplified
                                 && probe != null) {
                             // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
                             // distance (and the level of detail leaves the horizon rows unbounded): the full-
@@ -284,11 +283,11 @@ public final class Stitcher {
                             rowProbed++; // met on the surface between the central samples' own hits: no search needed
                         } else if (probe != null
                                 && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
-                                        Math.max(0.9 * hint[1], NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
-                                        2 * hint[2] + 500))
-                                && (r < Double.POSITIVE_INFINITY || hint[0] > 0)) {
+                                        Math.max(0.9 * hint.nearestCornerMetres, NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
+                                        2 * hint.farthestCornerMetres + 500))
+                                && (r < Double.POSITIVE_INFINITY || hint.skyInCentre)) {
                             rowProbed++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
-                        } else if (hint[0] > 0) {
+                        } else if (hint.skyInCentre) {
                             r = Double.POSITIVE_INFINITY; // sky beside it and no triangle met: sky
                             rowExact++;
                         } else {
@@ -400,20 +399,34 @@ public final class Stitcher {
     }
 
     /**
+     * What {@link #exactRange} says of a pixel besides its distance, and its scratch: one per stripe of rows,
+     * overwritten pixel by pixel.
+     */
+    static final class ExactHint {
+        /** Scratch: the distinct triangles seen around the pixel. */
+        final int[] candidates = new int[16];
+        /** When NaN is returned: whether sky is seen among the central 2×2 samples. */
+        boolean skyInCentre;
+        /** When NaN is returned: distances to the nearest and the farthest candidate's first corner, metres. */
+        double nearestCornerMetres, farthestCornerMetres;
+        /** When a distance is returned: whether the triangle met is a simplified patch's ({@link SeenTriangles#simplified()}). */
+        boolean simplified;
+        /** When a distance is returned: the sine of the incidence on the triangle met if simplified (only then asked), else 1. */
+        double incidenceSine;
+    }
+
+    /**
      * The distance along a pixel's own ray to the nearest of the triangles seen at the 4×4 view
      * samples around it; +∞ (sky) when nothing is seen there; NaN when it meets none of them.
      *
-     * @param tri        triangle per view sample, −1 for sky
-     * @param px         fractional view pixel (centres at integers), GL rows
-     * @param candidates a 16-int scratch buffer, overwritten
-     * @param hint       receives, when NaN is returned: [0] 1 if sky is seen among the central 2×2
-     *                   samples (else 0), [1] and [2] the distances to the nearest and the farthest
-     *                   candidate's first corner; when a distance is returned: [4] 1 if the triangle
-     *                   met is a simplified patch's ({@link SeenTriangles#simplified()}), else 0, and
-     *                   [3] the sine of the incidence on it if so (only then is it asked), else 1
+     * @param tri  triangle per view sample, −1 for sky
+     * @param p    the pixel in the view: {px, py, …}, fractional view pixel (centres at integers), GL rows
+     * @param ray  the pixel's own ray, unit, in the eye's frame (jME axes: east, up, south)
+     * @param hint receives what else is known of the pixel
      */
-    static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double px, double py, double dx, double dy,
-                             double dz, int[] candidates, double[] hint) {
+    static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double[] p, double[] ray, ExactHint hint) {
+        double px = p[0], py = p[1], dx = ray[0], dy = ray[1], dz = ray[2];
+        int[] candidates = hint.candidates;
         int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
         int w = l.widthPx(), h = l.heightPx();
         // Fast path, most pixels: the central 2×2 samples saw one triangle. The pixel's ray lies
@@ -424,8 +437,8 @@ public final class Stitcher {
                 double d = seen.skirt()[t] ? Double.POSITIVE_INFINITY : seen.distanceAlong(t, dx, dy, dz);
                 if (d < Double.POSITIVE_INFINITY) {
                     boolean simplified = seen.simplified()[t];
-                    hint[3] = simplified ? seen.incidenceSine(t, dx, dy, dz) : 1; // only a simplified patch's is asked
-                    hint[4] = simplified ? 1 : 0;
+                    hint.incidenceSine = simplified ? seen.incidenceSine(t, dx, dy, dz) : 1; // only a simplified patch's is asked
+                    hint.simplified = simplified;
                     return d;
                 }
             }
@@ -473,8 +486,8 @@ public final class Stitcher {
             best = Double.POSITIVE_INFINITY; // a skirt hangs below the surface: the ray went under a simplified patch
         } else if (best < Double.POSITIVE_INFINITY || n == 0) {
             boolean simplified = met >= 0 && seen.simplified()[met];
-            hint[3] = simplified ? seen.incidenceSine(met, dx, dy, dz) : 1;
-            hint[4] = simplified ? 1 : 0;
+            hint.incidenceSine = simplified ? seen.incidenceSine(met, dx, dy, dz) : 1;
+            hint.simplified = simplified;
             return best;
         }
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;
@@ -483,9 +496,9 @@ public final class Stitcher {
             nearestCorner = Math.min(nearestCorner, d);
             farthestCorner = Math.max(farthestCorner, d);
         }
-        hint[0] = skyInCentre ? 1 : 0;
-        hint[1] = nearestCorner;
-        hint[2] = farthestCorner;
+        hint.skyInCentre = skyInCentre;
+        hint.nearestCornerMetres = nearestCorner;
+        hint.farthestCornerMetres = farthestCorner;
         return Double.NaN;
     }
 
