@@ -37,25 +37,47 @@ public final class Stitcher {
         float[] depth = c.depth();
         float[] inv = new float[depth.length];
         int w = layout.widthPx();
-        // Shader range to eye depth: divide by the ray's secant, √(1 + x² + y²) (per row and column).
-        double[] xx = new double[w];
-        for (int x = 0; x < w; x++) {
-            double t = layout.xTanOfPixel(x);
-            xx[x] = t * t;
-        }
+        Secants secants = mode == DepthMode.SHADER_RANGE ? new Secants(layout) : null;
         IntStream.range(0, layout.heightPx()).parallel().forEach(row -> {
-            double y = layout.yTanOfPixel(row), yy1 = 1 + y * y;
             for (int x = 0, i = row * w; x < w; x++, i++) {
                 float d = depth[i];
                 inv[i] = switch (mode) {
                     case STANDARD_24 -> d >= 1f ? 0f
                             : (float) (1 / DepthLinearizer.standardEyeDepth(DepthLinearizer.quantize24(d), nearMetres, farMetres));
                     case REVERSED_32F -> d > 0 ? (float) (d / nearMetres) : 0f; // z_e = n / z_b
-                    case SHADER_RANGE -> d > 0 && d < Float.POSITIVE_INFINITY ? (float) (Math.sqrt(yy1 + xx[x]) / d) : 0f;
+                    case SHADER_RANGE -> secants.inverseEyeDepth(d, x, row);
                 };
             }
         });
         return inv;
+    }
+
+    /**
+     * Shader range to inverse eye depth for one view's samples: the range divided by the sample ray's secant,
+     * √(1 + x² + y²), from per-column and per-row tables. The one arithmetic of {@link #inverseEyeDepths} and of the
+     * stitcher's conversions where asked, so both give the same bits.
+     */
+    private static final class Secants {
+        private final double[] xx, yy1;
+
+        Secants(ViewLayout layout) {
+            xx = new double[layout.widthPx()];
+            yy1 = new double[layout.heightPx()];
+            for (int x = 0; x < xx.length; x++) {
+                double t = layout.xTanOfPixel(x);
+                xx[x] = t * t;
+            }
+            for (int y = 0; y < yy1.length; y++) {
+                double t = layout.yTanOfPixel(y);
+                yy1[y] = 1 + t * t;
+            }
+        }
+
+        /** 1/metres, 0 where nothing was drawn (range ≤ 0 or infinite). */
+        float inverseEyeDepth(float rangeMetres, int x, int y) {
+            return rangeMetres > 0 && rangeMetres < Float.POSITIVE_INFINITY
+                    ? (float) (Math.sqrt(yy1[y] + xx[x]) / rangeMetres) : 0f;
+        }
     }
 
     /**
@@ -139,25 +161,14 @@ public final class Stitcher {
         private final float[][] given;
         private final ViewCapture[] captures;
         private final ViewLayout layout;
-        private final double[] xx, yy1;
+        private final Secants secants; // null where given
         private final float[][] converted;
 
         InverseDepths(ViewCapture[] captures, ViewLayout layout, float[][] given) {
             this.given = given;
             this.captures = captures;
             this.layout = layout;
-            xx = new double[layout.widthPx()];
-            yy1 = new double[layout.heightPx()];
-            if (given == null) { // the factors inverseEyeDepths applies, in its arithmetic
-                for (int x = 0; x < xx.length; x++) {
-                    double t = layout.xTanOfPixel(x);
-                    xx[x] = t * t;
-                }
-                for (int y = 0; y < yy1.length; y++) {
-                    double t = layout.yTanOfPixel(y);
-                    yy1[y] = 1 + t * t;
-                }
-            }
+            secants = given == null ? new Secants(layout) : null;
             converted = new float[captures.length][];
         }
 
@@ -166,9 +177,8 @@ public final class Stitcher {
             if (given != null) {
                 return given[view][i];
             }
-            float d = captures[view].depth()[i];
-            int w = xx.length;
-            return d > 0 && d < Float.POSITIVE_INFINITY ? (float) (Math.sqrt(yy1[i / w] + xx[i % w]) / d) : 0f;
+            int w = layout.widthPx();
+            return secants.inverseEyeDepth(captures[view].depth()[i], i % w, i / w);
         }
 
         /** A whole view (for the inverse-depth rule), converted on first use where not given. */
@@ -237,8 +247,7 @@ public final class Stitcher {
                         continue;
                     }
                     // With exact distances: all 4×4 samples around are sky (the top terrain rows say so cheaply).
-                    boolean sky = seen != null && inverseEyeDepth != null
-                            && skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]));
+                    boolean sky = seen != null && skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]));
                     if (argbOut != null) {
                         // Sky all around: the four samples hold the one clear colour, which the blend gives back exactly.
                         argbOut[i] = sky ? texel(captures[view].rgba(), layout, p[0], p[1])

@@ -117,20 +117,13 @@ public final class SeenTriangleResolver {
         }
         int[] sg = seenGeometry, sp = seenPrimitive;
         IntStream.range(0, seen).parallel().forEach(t -> {
-            double[] ecef = new double[3], up = new double[3], v = new double[9];
+            double[] v = new double[9];
             Buffers b = buffers[sg[t]];
             int p = sp[t];
-            int[] vertices = new int[3];
-            for (int corner = 0; corner < 3; corner++) {
-                int vertex = vertices[corner] = b.index.get(3 * p + corner);
-                for (int a = 0; a < 3; a++) {
-                    ecef[a] = (double) b.high.get(3 * vertex + a) + b.low.get(3 * vertex + a);
-                    up[a] = b.up.get(4 * vertex + a);
-                }
-                placement.place(ecef, up, b.up.get(4 * vertex + 3), v, 3 * corner);
-            }
+            b.place(p, placement, v);
             simplified[t] = !fullResolution[sg[t]];
-            skirt[t] = b.sameFoot(vertices[0], vertices[1]) || b.sameFoot(vertices[1], vertices[2]) || b.sameFoot(vertices[0], vertices[2]);
+            int i = b.index.get(3 * p), j = b.index.get(3 * p + 1), k = b.index.get(3 * p + 2);
+            skirt[t] = b.sameFoot(i, j) || b.sameFoot(j, k) || b.sameFoot(i, k);
             int o = 9 * t;
             corners[o] = v[0];
             corners[o + 1] = v[1];
@@ -214,12 +207,9 @@ public final class SeenTriangleResolver {
          * @param eye the eye, ECEF metres
          */
         private double facingTheEye(int p, EyePlacement placement, double[] eye) {
-            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
-            double ax = at(high, low, 3 * a), ay = at(high, low, 3 * a + 1), az = at(high, low, 3 * a + 2);
-            double e1x = at(high, low, 3 * b) - ax, e1y = at(high, low, 3 * b + 1) - ay, e1z = at(high, low, 3 * b + 2) - az;
-            double e2x = at(high, low, 3 * c) - ax, e2y = at(high, low, 3 * c + 1) - ay, e2z = at(high, low, 3 * c + 2) - az;
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            double tx = eye[0] - ax, ty = eye[1] - ay, tz = eye[2] - az;
+            double[] q = ecefNormal(p);
+            double nx = q[3], ny = q[4], nz = q[5];
+            double tx = eye[0] - q[0], ty = eye[1] - q[1], tz = eye[2] - q[2];
             double facing = nx * tx + ny * ty + nz * tz;
             double squared = tx * tx + ty * ty + tz * tz;
             double doubt = (4 * Math.abs(placement.liftPerSquareMetre()) * squared + 1)
@@ -232,15 +222,8 @@ public final class SeenTriangleResolver {
          * wound counter-clockwise) to the eye; negative for its back, 0 edge-on.
          */
         private double facingTheEyePlaced(int p, EyePlacement placement) {
-            double[] v = new double[9], ecef = new double[3], normal = new double[3];
-            for (int corner = 0; corner < 3; corner++) {
-                int vertex = index.get(3 * p + corner);
-                for (int a = 0; a < 3; a++) {
-                    ecef[a] = at(high, low, 3 * vertex + a);
-                    normal[a] = up.get(4 * vertex + a);
-                }
-                placement.place(ecef, normal, up.get(4 * vertex + 3), v, 3 * corner);
-            }
+            double[] v = new double[9];
+            place(p, placement, v);
             double e1x = v[3] - v[0], e1y = v[4] - v[1], e1z = v[5] - v[2];
             double e2x = v[6] - v[0], e2y = v[7] - v[1], e2z = v[8] - v[2];
             double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
@@ -252,15 +235,35 @@ public final class SeenTriangleResolver {
          * ellipsoid normal), negative for clockwise, 0 for none (degenerate). ECEF in double.
          */
         private double windingSeenFromAbove(int p) {
-            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
-            double ax = at(high, low, 3 * a), ay = at(high, low, 3 * a + 1), az = at(high, low, 3 * a + 2);
-            double e1x = at(high, low, 3 * b) - ax, e1y = at(high, low, 3 * b + 1) - ay, e1z = at(high, low, 3 * b + 2) - az;
-            double e2x = at(high, low, 3 * c) - ax, e2y = at(high, low, 3 * c + 1) - ay, e2z = at(high, low, 3 * c + 2) - az;
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            return nx * up.get(4 * a) + ny * up.get(4 * a + 1) + nz * up.get(4 * a + 2);
+            double[] q = ecefNormal(p);
+            int a = 4 * index.get(3 * p);
+            return q[3] * up.get(a) + q[4] * up.get(a + 1) + q[5] * up.get(a + 2);
         }
 
-        private static double at(FloatBuffer high, FloatBuffer low, int i) {
+        /** A triangle's first vertex and the cross product of its edges (drawn order), ECEF in double: 6 values. */
+        private double[] ecefNormal(int p) {
+            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
+            double ax = at(3 * a), ay = at(3 * a + 1), az = at(3 * a + 2);
+            double e1x = at(3 * b) - ax, e1y = at(3 * b + 1) - ay, e1z = at(3 * b + 2) - az;
+            double e2x = at(3 * c) - ax, e2y = at(3 * c + 1) - ay, e2z = at(3 * c + 2) - az;
+            return new double[] {ax, ay, az, e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x};
+        }
+
+        /** A triangle's three vertices placed as the shader places them (eye frame, double) into {@code v[0..8]}. */
+        void place(int p, EyePlacement placement, double[] v) {
+            double[] ecef = new double[3], normal = new double[3];
+            for (int corner = 0; corner < 3; corner++) {
+                int vertex = index.get(3 * p + corner);
+                for (int a = 0; a < 3; a++) {
+                    ecef[a] = at(3 * vertex + a);
+                    normal[a] = up.get(4 * vertex + a);
+                }
+                placement.place(ecef, normal, up.get(4 * vertex + 3), v, 3 * corner);
+            }
+        }
+
+        /** Component i of the stored positions: the double a double-single pair holds. */
+        private double at(int i) {
             return high.get(i) + (double) low.get(i);
         }
 

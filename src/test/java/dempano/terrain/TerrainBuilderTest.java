@@ -4,12 +4,18 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Mesh;
+import com.jme3.scene.VertexBuffer;
+import com.jme3.scene.mesh.IndexBuffer;
 import dempano.Synthetic;
 import dempano.dem.DemSource;
 import dempano.dem.MissingTilePolicy;
 import dempano.dem.Mosaic;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
+import java.nio.FloatBuffer;
+import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -53,8 +59,8 @@ class TerrainBuilderTest {
             assertEquals(first.triangles(), t.triangles());
             assertEquals(first.vertices(), t.vertices());
         }
-        assertTrue(java.util.Arrays.stream(first.patchesPerLevel()).filter(n -> n > 0).count() >= 3,
-                "several levels are in use: " + java.util.Arrays.toString(first.patchesPerLevel()));
+        assertTrue(Arrays.stream(first.patchesPerLevel()).filter(n -> n > 0).count() >= 3,
+                "several levels are in use: " + Arrays.toString(first.patchesPerLevel()));
         // 2 km away the range circle moves by 2 km: only patches along its rim are new.
         double lat2 = lat + 0.018;
         TerrainBuilder.Terrain moved = build(dem, lat2, lon, range, cache);
@@ -136,17 +142,17 @@ class TerrainBuilderTest {
         for (double[] eye : new double[][] {{46.5, 8.5, 1500}, {46.42, 8.41, 400}, {46.48, 8.55, 5000}}) {
             TerrainBuilder.Terrain cached = panoramaBuild(dem, eye[0], eye[1], eye[2], cache);
             TerrainBuilder.Terrain fresh = panoramaBuild(dem, eye[0], eye[1], eye[2], null);
-            assertArrayEquals(fresh.patchesPerLevel(), cached.patchesPerLevel(), java.util.Arrays.toString(eye));
+            assertArrayEquals(fresh.patchesPerLevel(), cached.patchesPerLevel(), Arrays.toString(eye));
             assertEquals(fresh.triangles(), cached.triangles());
             assertTrue(cached.reusedPatches() == 0 && cache.size() > 0.5 * cached.patches());
         }
-        assertTrue(!java.util.Arrays.equals(low.patchesPerLevel(), panoramaBuild(dem, 46.5, 8.5, 1500, cache).patchesPerLevel()),
+        assertTrue(!Arrays.equals(low.patchesPerLevel(), panoramaBuild(dem, 46.5, 8.5, 1500, cache).patchesPerLevel()),
                 "the eye's height changes the levels");
     }
 
     private static int countMerged(TerrainBuilder.Terrain t) {
         int merged = 0;
-        for (com.jme3.scene.Geometry g : t.transientParts()) {
+        for (Geometry g : t.transientParts()) {
             merged += g.getName().contains("-coarse-") ? 1 : 0;
         }
         return merged;
@@ -166,13 +172,13 @@ class TerrainBuilderTest {
         assertTrue(b.evicted().size() > 0);
         int fineB = b.patchesPerLevel()[0] + b.patchesPerLevel()[1];
         assertEquals(fineB, small.size(), "only the second build's geometries stay");
-        java.util.Set<com.jme3.scene.Geometry> drawn = new java.util.HashSet<>();
+        java.util.Set<Geometry> drawn = new java.util.HashSet<>();
         b.root().depthFirstTraversal(sp -> {
-            if (sp instanceof com.jme3.scene.Geometry g) {
+            if (sp instanceof Geometry g) {
                 drawn.add(g);
             }
         });
-        for (com.jme3.scene.Geometry g : b.evicted()) {
+        for (Geometry g : b.evicted()) {
             assertTrue(!drawn.contains(g), "an evicted geometry is not in the scene being drawn");
         }
     }
@@ -191,14 +197,14 @@ class TerrainBuilderTest {
         for (int n : t.patchesPerLevel()) {
             levels += n > 0 ? 1 : 0;
         }
-        assertTrue(levels >= 3, java.util.Arrays.toString(t.patchesPerLevel()));
+        assertTrue(levels >= 3, Arrays.toString(t.patchesPerLevel()));
         long pairs = 0, skirtPairs = 0, single = 0;
-        for (com.jme3.scene.Geometry g : t.drawn()) {
-            com.jme3.scene.Mesh mesh = g.getMesh();
-            java.nio.FloatBuffer high = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.Position).getData();
-            java.nio.FloatBuffer low = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.TexCoord2).getData();
-            java.nio.FloatBuffer up = (java.nio.FloatBuffer) mesh.getBuffer(com.jme3.scene.VertexBuffer.Type.TexCoord3).getData();
-            com.jme3.scene.mesh.IndexBuffer index = mesh.getIndexBuffer();
+        for (Geometry g : t.drawn()) {
+            Mesh mesh = g.getMesh();
+            FloatBuffer high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
+            FloatBuffer low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
+            FloatBuffer up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
+            IndexBuffer index = mesh.getIndexBuffer();
             int triangles = index.size() / 3;
             int[][] endingAt = new int[mesh.getVertexCount()][];
             for (int p = 0; p < triangles; p++) {
@@ -239,7 +245,7 @@ class TerrainBuilderTest {
     }
 
     /** A triangle's normal by the right-hand rule over its drawn order (ECEF, double). */
-    private static double[] normal(com.jme3.scene.mesh.IndexBuffer index, java.nio.FloatBuffer high, java.nio.FloatBuffer low, int p) {
+    private static double[] normal(IndexBuffer index, FloatBuffer high, FloatBuffer low, int p) {
         double[][] v = new double[3][3];
         for (int c = 0; c < 3; c++) {
             int k = index.get(3 * p + c);
