@@ -33,6 +33,8 @@ public final class StitchBenchmark implements Callable<Integer> {
     double rangeKm;
     @Option(names = "--ppd", description = "Pixels per degree (default: ${DEFAULT-VALUE}).", defaultValue = "20")
     double ppd;
+    @Option(names = "--elevation-range", paramLabel = "BOTTOM:TOP", description = "Elevation range, degrees (default: ${DEFAULT-VALUE}).", defaultValue = "-30:30")
+    String elevationRange;
     @Option(names = "--runs", description = "Timed stitches after one warm-up (default: ${DEFAULT-VALUE}).", defaultValue = "7")
     int runs;
 
@@ -44,7 +46,8 @@ public final class StitchBenchmark implements Callable<Integer> {
     public Integer call() throws Exception {
         AtomicReference<PanoramaRenderer.StitchInputs> kept = new AtomicReference<>();
         PanoramaRenderer.stitchTap = kept::set;
-        PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd);
+        PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd)
+                .withElevationRange(dempano.panorama.ElevationRange.parse(elevationRange));
         try (PanoramaRenderer r = PanoramaRenderer.open(new DemDirectory(dem, 64))) {
             r.render(req);
         } finally {

@@ -223,24 +223,35 @@ public final class TerrainRayProbe implements RayProbe {
         if (r0 < 0 || c0 < 0 || r1 + 1 >= mosaic.rows() || c1 + 1 >= mosaic.cols() || samples > MAX_PATH_SAMPLES) {
             return otherwise;
         }
-        // Recently placed vertices and visited cells, direct-mapped by grid index: a vertex serves four cells, and
+        // Visited cells (this walk's: keys carry its stamp) and placed vertices (this probe's, kept from walk to walk:
+        // neighbouring pixels' rays cross the same cells), direct-mapped by grid index: a vertex serves four cells, and
         // the path meets a cell again at its next samples. A collision costs a recomputation of the same value.
-        long[] vertexKey = new long[CACHE_SLOTS], cellKey = new long[CACHE_SLOTS];
-        java.util.Arrays.fill(vertexKey, -1);
-        java.util.Arrays.fill(cellKey, -1);
-        double[] vertexAt = new double[3 * CACHE_SLOTS];
-        double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3], tri = new double[9];
+        WalkTables w = WalkTables.of(this);
+        long stamp = w.nextWalk();
+        long[] vertexKey = w.vertexKey, cellKey = w.cellKey;
+        double[] vertexAt = w.vertexAt;
+        double[] nw = w.nw, ne = w.ne, sw = w.sw, se = w.se, tri = w.tri;
         double best = Double.POSITIVE_INFINITY;
         // Past a hit, cells two cells' length of ray farther on hold only farther hits: the walk stops there.
         double beyond = 2 * cellLongestMetres / Math.max(Math.hypot(e, n), 0.01);
+        int lastRowLo = Integer.MIN_VALUE, lastRowHi = 0, lastColLo = 0, lastColHi = 0;
         for (int i = 0; i <= samples; i++) {
             double f = (double) i / samples, row = rowA + f * (rowB - rowA), col = colA + f * (colB - colA);
             if (from + f * (to - from) > best + beyond) {
                 break;
             }
+            int rowLo = (int) Math.floor(row - 0.05), rowHi = (int) Math.floor(row + 0.05);
+            int colLo = (int) Math.floor(col - 0.05), colHi = (int) Math.floor(col + 0.05);
+            if (rowLo == lastRowLo && rowHi == lastRowHi && colLo == lastColLo && colHi == lastColHi) {
+                continue; // the sample before lay on the same cells (a cell holds about four samples): all visited
+            }
+            lastRowLo = rowLo;
+            lastRowHi = rowHi;
+            lastColLo = colLo;
+            lastColHi = colHi;
             for (int k = 0; k < 4; k++) {
-                int r = (int) Math.floor(row + ((k & 1) == 0 ? -0.05 : 0.05)), c = (int) Math.floor(col + ((k & 2) == 0 ? -0.05 : 0.05));
-                long cell = (long) r * mosaic.cols() + c;
+                int r = (k & 1) == 0 ? rowLo : rowHi, c = (k & 2) == 0 ? colLo : colHi;
+                long cell = stamp + (long) r * mosaic.cols() + c;
                 int slot = (int) (cell & (CACHE_SLOTS - 1));
                 if (r < r0 || r > r1 || c < c0 || c > c1 || cellKey[slot] == cell) {
                     continue;
@@ -267,15 +278,62 @@ public final class TerrainRayProbe implements RayProbe {
         return best < Double.POSITIVE_INFINITY ? best : otherwise;
     }
 
-    /** Slots of {@link #trianglesBetween}'s vertex and cell caches (a power of two). */
+    /** Slots of {@link #trianglesBetween}'s cell table (a power of two). */
     private static final int CACHE_SLOTS = 64;
+    /** Slots of the placed-vertex cache (a power of two): 128 KB a thread. */
+    static final int VERTEX_SLOTS = 4096;
+
+    /**
+     * A thread's tables for {@link #trianglesBetween}, so that a walk allocates nothing: the cells visited by the
+     * current walk, and the vertices placed by the probe that last used them.
+     * <p>
+     * Cache contract. A vertex's position is a pure function of its grid index for one probe (its mosaic's
+     * immutable samples, its eye and refraction), so placed vertices are kept from walk to walk, keyed by grid
+     * index: what invalidates them is another probe. The tables belong to one probe at a time ({@link #of}); a walk
+     * by any other probe on the thread (another render, another eye, another DEM) empties them first. Cell keys
+     * carry the walk's stamp (+2^40 a walk; a mosaic has far fewer samples than 2^40), so no cell is taken as
+     * visited by an earlier walk; when the stamp wraps round (every 2^24 walks) the cell table is emptied.
+     */
+    static final class WalkTables {
+        private static final ThreadLocal<WalkTables> OF_THREAD = ThreadLocal.withInitial(WalkTables::new);
+
+        final long[] vertexKey = new long[VERTEX_SLOTS], cellKey = new long[CACHE_SLOTS];
+        final double[] vertexAt = new double[3 * VERTEX_SLOTS];
+        final double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3], tri = new double[9];
+        /** Weak: a pool thread's tables must not keep a finished render's probe (and its mosaic) alive. */
+        private java.lang.ref.WeakReference<TerrainRayProbe> owner = new java.lang.ref.WeakReference<>(null);
+        private long stamp;
+
+        private WalkTables() {
+            java.util.Arrays.fill(cellKey, -1);
+        }
+
+        /** The thread's tables, emptied of another probe's vertices. */
+        static WalkTables of(TerrainRayProbe probe) {
+            WalkTables w = OF_THREAD.get();
+            if (w.owner.get() != probe) {
+                java.util.Arrays.fill(w.vertexKey, -1);
+                w.owner = new java.lang.ref.WeakReference<>(probe);
+            }
+            return w;
+        }
+
+        long nextWalk() {
+            stamp += 1L << 40;
+            if (stamp == 0) {
+                java.util.Arrays.fill(cellKey, -1);
+                stamp = 1L << 40;
+            }
+            return stamp;
+        }
+    }
     /** Longest path {@link #trianglesBetween} walks, in samples of a quarter cell. */
     private static final int MAX_PATH_SAMPLES = 4096;
 
     /** Vertex (r, c)'s position as the reference places it, from the cache where it is there. */
     private void vertex(int r, int c, long[] keys, double[] positions, double[] out) {
         long key = (long) r * mosaic.cols() + c;
-        int slot = (int) (key & (CACHE_SLOTS - 1)), o = 3 * slot;
+        int slot = (int) ((key ^ (key >>> 12)) & (VERTEX_SLOTS - 1)), o = 3 * slot; // folded: a row apart is not a slot apart
         if (keys[slot] != key) {
             surface.position(r, c, out);
             keys[slot] = key;

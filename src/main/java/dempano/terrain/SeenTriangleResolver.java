@@ -103,9 +103,14 @@ public final class SeenTriangleResolver {
         IntStream.range(0, captures.length).parallel().forEach(k -> {
             int[] ids = captures[k].triangleIds();
             int[] out = new int[ids.length];
+            int previousId = -1, previous = -1; // neighbouring samples mostly share a triangle: look up each run once
             for (int i = 0; i < ids.length; i++) {
                 int id = ids[i];
-                out[i] = id >= 0 && id < totalNames ? compactOfKey[keyOfName[id] - 1] : -1;
+                if (id != previousId) {
+                    previousId = id;
+                    previous = id >= 0 && id < totalNames ? compactOfKey[keyOfName[id] - 1] : -1;
+                }
+                out[i] = previous;
             }
             triangleOfSample[k] = out;
         });

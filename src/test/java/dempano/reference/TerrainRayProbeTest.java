@@ -153,6 +153,40 @@ class TerrainRayProbeTest {
     }
 
     /**
+     * The placed-vertex cache ({@link TerrainRayProbe.WalkTables}) is kept from walk to walk on a thread, so a walk by
+     * another probe must never be served the first one's vertices. Two plane DEMs, at 500 m and at 600 m, on the same
+     * grid, the eye at 2000 m over both: probe A walks a stretch holding the cells where B's ray meets its plane (A's
+     * vertices there are 100 m too low for B), then B walks them, then A again. Each must meet its own plane where the
+     * closed form says; stale vertices would put B's hit at A's (outside B's stretch: NaN) and A's at B's.
+     */
+    @Test
+    void placedVerticesKeptFromWalkToWalkAreNeverServedToAnotherProbe() {
+        TileSelection where = TileSelection.around(46.5, 8.5, 20_000);
+        Mosaic low = Mosaic.of(Synthetic.dem((lat, lon) -> 500, 46, 8, 1, 1), where, MissingTilePolicy.AUTO);
+        Mosaic high = Mosaic.of(Synthetic.dem((lat, lon) -> 600, 46, 8, 1, 1), where, MissingTilePolicy.AUTO);
+        TerrainRayProbe a = new TerrainRayProbe(low, Viewpoint.onDem(low, 46.5, 8.5, 1500, 0), new Refraction(0), 20_000);
+        TerrainRayProbe b = new TerrainRayProbe(high, Viewpoint.onDem(high, 46.5, 8.5, 1400, 0), new Refraction(0), 20_000);
+        LocalFrame frame = new LocalFrame(46.5, 8.5, 2000);
+        double[] origin = new double[3];
+        frame.enuToEcef(0, 0, 0, origin);
+        for (double azDeg = 0; azDeg < 360; azDeg += 60) {
+            double el = Math.toRadians(-30), az = Math.toRadians(azDeg);
+            double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
+            double[] dir = new double[3];
+            EllipsoidRay.enuDirectionToEcef(frame, origin, e, n, u, new double[3], dir);
+            double truthA = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 500, Ellipsoid.B_METRES + 500);
+            double truthB = EllipsoidRay.distanceMetres(origin, dir, Ellipsoid.A_METRES + 600, Ellipsoid.B_METRES + 600);
+            String at = "azimuth " + azDeg + "°";
+            assertTrue(truthB < 0.95 * truthA, at + ": the planes are met apart");
+            for (int round = 0; round < 2; round++) {
+                // A's stretch runs from short of B's hit to past its own: its walk places the cells under B's hit.
+                assertEquals(truthA, a.nearestHitBetweenMetres(e, u, -n, 0.97 * truthB, 1.02 * truthA), 2e-6 * truthA, at + ", A");
+                assertEquals(truthB, b.nearestHitBetweenMetres(e, u, -n, 0.98 * truthB, 1.02 * truthB), 2e-6 * truthB, at + ", B");
+            }
+        }
+    }
+
+    /**
      * On rugged relief (ridges a few cells wide, summits of one sample), the crest-safe search must
      * find what a dense march finds: the first sign change of the clearance sampled every 1/16 of a
      * cell, then bisected. The march can miss a crest crossed over less than its step, where the
