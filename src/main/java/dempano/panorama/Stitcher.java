@@ -210,8 +210,6 @@ public final class Stitcher {
      */
     static final double GRAZING_WINDOW = 0.005;
 
-    /** Interleaved stripes of rows the per-pixel walk is split into, for the parallel stream to balance. */
-    static final int ROW_STRIPES = 64;
 
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range (colour only). */
     private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth,
@@ -224,18 +222,22 @@ public final class Stitcher {
         java.util.concurrent.atomic.LongAdder exactCount = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
-        int height = target.heightPx(), stripes = Math.min(height, ROW_STRIPES);
-        // Rows are dealt out in interleaved stripes (stripe s: rows s, s + stripes, …), not in blocks of adjacent
-        // rows: the probed pixels crowd around the horizon rows, so blocks of rows would leave one core with most
-        // of the work; every stripe holds the same mix of rows. The output does not depend on the split.
-        IntStream.range(0, stripes).parallel().forEach(stripe -> {
-            double[][] scratch = new double[4][4]; // one neighbourhood buffer per stripe, not per pixel
+        int height = target.heightPx();
+        // Each worker takes the next row not yet taken until none is left. The probed pixels crowd into a few rows
+        // around the horizon, so any fixed split of the rows leaves one core with most of the work at some
+        // viewpoints (interleaved stripes split four ways by the stream: 1.57 cores busy at Mount Washington's
+        // summit); taken a row at a time, the cores finish within a row of each other. The output does not depend
+        // on which worker takes which row.
+        int workers = Math.min(height, java.util.concurrent.ForkJoinPool.getCommonPoolParallelism() + 1); // + the caller
+        java.util.concurrent.atomic.AtomicInteger nextRow = new java.util.concurrent.atomic.AtomicInteger();
+        IntStream.range(0, workers).parallel().forEach(worker -> {
+            double[][] scratch = new double[4][4]; // one neighbourhood buffer per worker, not per pixel
             double[] p = new double[4];
             double[] ray = new double[3];
             ExactHint hint = new ExactHint();
             double[] span = new double[2];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
-            for (int row = stripe; row < height; row += stripes) {
+            for (int row = nextRow.getAndIncrement(); row < height; row = nextRow.getAndIncrement()) {
                 for (int col = 0; col < width; col++) {
                     int view = sampling.locate(col, row, p, ray);
                     int i = row * width + col;
@@ -408,7 +410,7 @@ public final class Stitcher {
     }
 
     /**
-     * What {@link #exactRange} says of a pixel besides its distance, and its scratch: one per stripe of rows,
+     * What {@link #exactRange} says of a pixel besides its distance, and its scratch: one per worker,
      * overwritten pixel by pixel.
      */
     static final class ExactHint {
