@@ -259,7 +259,7 @@ public final class TerrainBuilder {
                 w.fromCache = true;
             });
         }
-        IntStream.range(0, inRange.size()).parallel().forEach(i -> {
+        dempano.util.Parallel.forEachIndex(inRange.size(), i -> { // measured or cached: costs differ per patch
             PatchWork w = inRange.get(i);
             if (w.rawDeviations == null) {
                 w.rawDeviations = measureDeviations(mosaic, w.row0, w.col0);
@@ -312,7 +312,8 @@ public final class TerrainBuilder {
         }
         // Pass 3 (parallel): place the vertices of the patches not cached.
         List<PatchWork> toPlace = kept.stream().filter(w -> w.cached == null).toList();
-        IntStream.range(0, toPlace.size()).parallel().forEach(i -> toPlace.get(i).mesh = placer.mesh(toPlace.get(i),
+        // Patches of every level: a full-resolution patch places hundreds of times the vertices of a coarse one.
+        dempano.util.Parallel.forEachIndex(toPlace.size(), i -> toPlace.get(i).mesh = placer.mesh(toPlace.get(i),
                 toPlace.get(i).skirts));
 
         // Coarse patches (few vertices each) are merged per block into one geometry: tens of
