@@ -637,23 +637,32 @@ public final class TerrainBuilder {
                 tex.put(m.texCoords);
             }
             // The triangles class by class (LEVEL_COUNTER_CLOCKWISE, LEVEL_CLOCKWISE, LEVEL_SKIRTS), each class's
-            // part by part.
+            // part by part, gathered in a heap array and put in one bulk copy (a put per index cost most of a warm
+            // render's mesh stage).
             int[] classEnd = new int[3];
+            short[] shorts = shortIndices ? new short[ni] : null;
+            int[] ints = shortIndices ? null : new int[ni];
+            int at = 0;
             for (int facing = 0; facing < 3; facing++) {
                 int base = 0;
                 for (PatchMesh m : parts) {
                     int from = facing == 0 ? 0 : facing == 1 ? 3 * m.cellTriangles : 6 * m.cellTriangles;
                     int to = facing == 0 ? 3 * m.cellTriangles : facing == 1 ? 6 * m.cellTriangles : m.indices.length;
-                    for (int k = from; k < to; k++) {
+                    for (int k = from; k < to; k++, at++) {
                         if (shortIndices) {
-                            si.put((short) (base + m.indices[k]));
+                            shorts[at] = (short) (base + m.indices[k]);
                         } else {
-                            ii.put(base + m.indices[k]);
+                            ints[at] = base + m.indices[k];
                         }
                     }
                     base += m.vertexCount();
                 }
-                classEnd[facing] = shortIndices ? si.position() : ii.position();
+                classEnd[facing] = at;
+            }
+            if (shortIndices) {
+                si.put(shorts);
+            } else {
+                ii.put(ints);
             }
             Mesh mesh = new Mesh();
             mesh.setMode(Mesh.Mode.Triangles);
