@@ -26,10 +26,11 @@ import org.junit.jupiter.params.provider.CsvSource;
  * sample differs from the picture drawn with every face, something farther is seen now, never nearer (no face
  * turned to the eye is lost). From above a height field no face turned away can be seen, so at Mount Washington
  * almost every sample names the same triangle (13 of 1 273 000 differ, measured). At Eggishorn 4 % do (51 044,
- * at 100 m to 1 km): there the eye sees faces from behind, and with them culled the panorama is nearer the CPU
- * reference (pixels more than 5 % off at 10 px/°, 80 km, −15…15°: 36 822 against 37 316; that scene's 3.4 % is
- * a known gap, not this test's). Drawn twice over, the culled views are the same (the parts added for a render
- * leave nothing behind).
+ * at 100 m to 1 km): this test's 1 m near plane cuts away the slope under the eye (which stands 0.9 m over the
+ * drawn surface there), so the views look out from under the ground, and see faces from behind; culled, they
+ * look through them. Renders choose a near plane within the eye's clearance over the drawn surface
+ * ({@link NearPlaneOnSteepSummitTest}) and see the slope itself. Drawn twice over, the culled views are the same
+ * (the parts added for a render leave nothing behind).
  */
 class BackFaceCullingTest {
     @ParameterizedTest(name = "{0}")
