@@ -2,6 +2,7 @@ package dempano.render;
 
 import com.jme3.app.LegacyApplication;
 import com.jme3.asset.AssetManager;
+import com.jme3.material.MatParamOverride;
 import com.jme3.material.Material;
 import com.jme3.material.RenderState;
 import com.jme3.math.Matrix4f;
@@ -21,10 +22,15 @@ import com.jme3.texture.Image;
 import dempano.panorama.DepthMode;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
+import dempano.terrain.TerrainBuilder;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
@@ -657,25 +663,25 @@ public final class OffscreenRenderer {
      * drawn again.
      */
     private static final class FacingSplit {
-        private final java.util.List<Geometry> split = new java.util.ArrayList<>(), added = new java.util.ArrayList<>();
+        private final List<Geometry> split = new ArrayList<>(), added = new ArrayList<>();
 
         static FacingSplit of(Node scene) {
             FacingSplit f = new FacingSplit();
-            java.util.List<Geometry> all = new java.util.ArrayList<>();
+            List<Geometry> all = new ArrayList<>();
             scene.depthFirstTraversal(sp -> {
-                if (sp instanceof Geometry g && g.getMesh().getNumLodLevels() == dempano.terrain.TerrainBuilder.LEVEL_SKIRTS + 1) {
+                if (sp instanceof Geometry g && g.getMesh().getNumLodLevels() == TerrainBuilder.LEVEL_SKIRTS + 1) {
                     all.add(g);
                 }
             });
             // One material per original material and class (clones: the caller's material is left as it was).
-            java.util.Map<com.jme3.material.Material, com.jme3.material.Material[]> byClass = new java.util.IdentityHashMap<>();
+            Map<Material, Material[]> byClass = new IdentityHashMap<>();
             for (Geometry g : all) {
-                com.jme3.material.Material[] m = byClass.computeIfAbsent(g.getMaterial(), o -> new com.jme3.material.Material[] {
+                Material[] m = byClass.computeIfAbsent(g.getMaterial(), o -> new Material[] {
                         null, o.clone(), o.clone(), o.clone()});
                 Mesh mesh = g.getMesh();
                 f.split.add(g);
                 g.setUserData(FACING_LEVEL, 0); // drawn by its parts
-                for (int level = dempano.terrain.TerrainBuilder.LEVEL_COUNTER_CLOCKWISE; level <= dempano.terrain.TerrainBuilder.LEVEL_SKIRTS; level++) {
+                for (int level = TerrainBuilder.LEVEL_COUNTER_CLOCKWISE; level <= TerrainBuilder.LEVEL_SKIRTS; level++) {
                     VertexBuffer indices = mesh.getLodLevel(level);
                     if (indices.getData().limit() == 0) {
                         continue; // no triangle of that class (a patch without skirts)
@@ -696,8 +702,8 @@ public final class OffscreenRenderer {
                     piece.setMaterial(m[level]);
                     piece.setUserData(FACING_LEVEL, level);
                     // The mesh's bound is eye-relative, as set by the terrain builder: azimuth culling takes it as set.
-                    piece.setUserData(dempano.terrain.TerrainBuilder.EYE_BOUND, g.getUserData(dempano.terrain.TerrainBuilder.EYE_BOUND));
-                    for (com.jme3.material.MatParamOverride o : g.getLocalMatParamOverrides()) {
+                    piece.setUserData(TerrainBuilder.EYE_BOUND, g.getUserData(TerrainBuilder.EYE_BOUND));
+                    for (MatParamOverride o : g.getLocalMatParamOverrides()) {
                         piece.addMatParamOverride(o);
                     }
                     g.getParent().attachChild(piece);
@@ -721,8 +727,8 @@ public final class OffscreenRenderer {
                 return RenderState.FaceCullMode.Off;
             }
             return switch (level) {
-                case dempano.terrain.TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> RenderState.FaceCullMode.Back;
-                case dempano.terrain.TerrainBuilder.LEVEL_CLOCKWISE -> RenderState.FaceCullMode.Front;
+                case TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> RenderState.FaceCullMode.Back;
+                case TerrainBuilder.LEVEL_CLOCKWISE -> RenderState.FaceCullMode.Front;
                 default -> RenderState.FaceCullMode.Off; // the skirts
             };
         }
