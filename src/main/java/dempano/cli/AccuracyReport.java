@@ -167,6 +167,10 @@ public final class AccuracyReport {
                     real, 43.8167, 6.9667, 100_000));
             scenes.add(new Scene("washington", "Mount Washington summit (N44W072), 100 km",
                     real, 44.2706, -71.3033, 100_000));
+            // A steep summit cell: the drawn surface stands 1.1 m above the DEM's bilinear height under the eye,
+            // which the near plane must respect (NearPlaneOnSteepSummitTest).
+            scenes.add(new Scene("eggishorn-steep", "Eggishorn, a steep summit cell (N46E008), 80 km",
+                    real, 46.4316, 8.0929, 80_000));
         } else {
             System.err.println("accuracyReport: " + dem + " absent: real scenes left out");
         }
