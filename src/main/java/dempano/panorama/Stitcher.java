@@ -210,7 +210,6 @@ public final class Stitcher {
      */
     static final double GRAZING_WINDOW = 0.005;
 
-
     /** The per-pixel walk of both; {@code inverseEyeDepth} null = nearest raw range (colour only). */
     private static Result resample(TargetImage target, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth,
                                    Exact exact, int[] argbOut, float[] rangeOut) {
@@ -228,16 +227,14 @@ public final class Stitcher {
         // viewpoints (interleaved stripes split four ways by the stream: 1.57 cores busy at Mount Washington's
         // summit); taken a row at a time, the cores finish within a row of each other. The output does not depend
         // on which worker takes which row.
-        int workers = Math.min(height, java.util.concurrent.ForkJoinPool.getCommonPoolParallelism() + 1); // + the caller
-        java.util.concurrent.atomic.AtomicInteger nextRow = new java.util.concurrent.atomic.AtomicInteger();
-        IntStream.range(0, workers).parallel().forEach(worker -> {
+        dempano.util.Parallel.forEachWorker(height, nextRow -> {
             double[][] scratch = new double[4][4]; // one neighbourhood buffer per worker, not per pixel
             double[] p = new double[4];
             double[] ray = new double[3];
             ExactHint hint = new ExactHint();
             double[] span = new double[2];
             long rowExact = 0, rowProbed = 0, rowFallback = 0;
-            for (int row = nextRow.getAndIncrement(); row < height; row = nextRow.getAndIncrement()) {
+            for (int row = nextRow.getAsInt(); row < height; row = nextRow.getAsInt()) {
                 for (int col = 0; col < width; col++) {
                     int view = sampling.locate(col, row, p, ray);
                     int i = row * width + col;

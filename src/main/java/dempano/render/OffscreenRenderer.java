@@ -723,13 +723,10 @@ public final class OffscreenRenderer {
         /** GL's culling for a geometry: back faces for the counter-clockwise class, front faces for the clockwise one. */
         static RenderState.FaceCullMode cullModeOf(Geometry g) {
             Integer level = g.getUserData(FACING_LEVEL);
-            if (level == null || level == 0) {
-                return RenderState.FaceCullMode.Off;
-            }
-            return switch (level) {
+            return level == null ? RenderState.FaceCullMode.Off : switch (level) {
                 case TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> RenderState.FaceCullMode.Back;
                 case TerrainBuilder.LEVEL_CLOCKWISE -> RenderState.FaceCullMode.Front;
-                default -> RenderState.FaceCullMode.Off; // the skirts
+                default -> RenderState.FaceCullMode.Off; // the skirts, and a split geometry itself (not drawn)
             };
         }
 

@@ -100,7 +100,8 @@ public final class TerrainBuilder {
      * culling GL's front faces (the faces turned away from the eye, for the clockwise ones) and level 3 culling
      * none (a skirt may be seen from either side): the faces drawn are the same as with no culling wherever the
      * terrain is seen from above, and a terrain face turned away from the eye is hidden behind the surface in
-     * front of it anyway. {@link dempano.render.OffscreenRenderer} draws so: 22–26 % less drawing on llvmpipe.
+     * front of it anyway. {@link dempano.render.OffscreenRenderer} draws so: 7–11 % less drawing on llvmpipe
+     * (each vertex is shaded once per class that uses it).
      */
     public static final int LEVEL_COUNTER_CLOCKWISE = 1, LEVEL_CLOCKWISE = 2, LEVEL_SKIRTS = 3;
 
@@ -646,9 +647,8 @@ public final class TerrainBuilder {
             for (int facing = 0; facing < 3; facing++) {
                 int base = 0;
                 for (PatchMesh m : parts) {
-                    int from = facing == 0 ? 0 : facing == 1 ? 3 * m.cellTriangles : 6 * m.cellTriangles;
-                    int to = facing == 0 ? 3 * m.cellTriangles : facing == 1 ? 6 * m.cellTriangles : m.indices.length;
-                    for (int k = from; k < to; k++, at++) {
+                    int[] classStart = {0, 3 * m.cellTriangles, 6 * m.cellTriangles, m.indices.length};
+                    for (int k = classStart[facing]; k < classStart[facing + 1]; k++, at++) {
                         if (shortIndices) {
                             shorts[at] = (short) (base + m.indices[k]);
                         } else {
@@ -671,11 +671,10 @@ public final class TerrainBuilder {
             mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
             mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
-            java.nio.Buffer all = shortIndices ? si.flip() : ii.flip();
             if (shortIndices) {
-                mesh.setBuffer(VertexBuffer.Type.Index, 3, si);
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
             } else {
-                mesh.setBuffer(VertexBuffer.Type.Index, 3, ii);
+                mesh.setBuffer(VertexBuffer.Type.Index, 3, ii.flip());
             }
             VertexBuffer[] lods = new VertexBuffer[LEVEL_SKIRTS + 1];
             lods[0] = mesh.getBuffer(VertexBuffer.Type.Index);
@@ -689,7 +688,6 @@ public final class TerrainBuilder {
                 lods[LEVEL_COUNTER_CLOCKWISE + facing] = lod;
             }
             mesh.setLodLevels(lods);
-            all.rewind();
             mesh.updateCounts();
             return mesh;
         }

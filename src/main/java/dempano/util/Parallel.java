@@ -2,7 +2,9 @@ package dempano.util;
 
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
 import java.util.function.IntConsumer;
+import java.util.function.IntSupplier;
 import java.util.stream.IntStream;
 
 /**
@@ -24,11 +26,21 @@ public final class Parallel {
 
     /** Runs {@code body} for every index in [0, n), in parallel, each worker taking the next index not yet taken. */
     public static void forEachIndex(int n, IntConsumer body) {
-        AtomicInteger next = new AtomicInteger();
-        IntStream.range(0, workers(n)).parallel().forEach(worker -> {
-            for (int i = next.getAndIncrement(); i < n; i = next.getAndIncrement()) {
+        forEachWorker(n, next -> {
+            for (int i = next.getAsInt(); i < n; i = next.getAsInt()) {
                 body.accept(i);
             }
         });
+    }
+
+    /**
+     * Runs {@link #workers(int) workers(n)} workers in parallel, each handed the shared source of indices: every call
+     * gives the next index of [0, n) not yet taken, then n and above once all are. For loops whose workers keep
+     * state of their own (scratch buffers, counters summed at the end).
+     */
+    public static void forEachWorker(int n, Consumer<IntSupplier> worker) {
+        AtomicInteger next = new AtomicInteger();
+        IntSupplier source = next::getAndIncrement;
+        IntStream.range(0, workers(n)).parallel().forEach(w -> worker.accept(source));
     }
 }

@@ -3,19 +3,8 @@ package dempano.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.jme3.material.Material;
-import com.jme3.scene.Geometry;
-import dempano.SharedData;
-import dempano.dem.DemDirectory;
-import dempano.dem.MissingTilePolicy;
-import dempano.dem.Mosaic;
-import dempano.geo.Refraction;
-import dempano.geo.Viewpoint;
-import dempano.panorama.DepthMode;
-import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
-import dempano.terrain.EyePlacement;
 import dempano.terrain.TerrainBuilder;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -40,24 +29,12 @@ class BackFaceCullingTest {
     })
     void cullingFacesTurnedAwayTakesAwayOnlyThem(String place, double lat, double lon, double rangeMetres,
                                                   double maxDifferingShare) {
-        Mosaic mosaic = Mosaic.around(new DemDirectory(SharedData.demDir()), lat, lon, rangeMetres,
-                MissingTilePolicy.SEA_LEVEL);
-        Viewpoint eye = Viewpoint.onDem(mosaic, lat, lon, 0, 2);
-        Refraction refraction = new Refraction(0.13);
-        double ppd = 10;
-        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, refraction, rangeMetres, null,
-                TerrainBuilder.Detail.of(ppd, 0.5));
-        ViewLayout layout = ViewLayout.forPanorama(PanoramaGeometry.of(ppd, -15, 15), 8, 1);
+        RealSceneViews scene = RealSceneViews.of(lat, lon, 2, rangeMetres);
+        TerrainBuilder.Terrain terrain = scene.terrain();
+        ViewLayout layout = scene.layout();
         try (OffscreenRenderer.Handle handle = OffscreenRenderer.acquire()) {
             OffscreenRenderer gl = handle.renderer();
-            Material material = gl.newTerrainMaterial(rangeMetres);
-            material.setBoolean("DistanceOnly", true);
-            new EyePlacement(eye, refraction).apply(material);
-            for (Geometry g : terrain.drawn()) {
-                g.setMaterial(material);
-            }
-            OffscreenRenderer.ViewRequest culled = new OffscreenRenderer.ViewRequest(layout, DepthMode.SHADER_RANGE, 1,
-                    rangeMetres * 1.1 + 20_000, false, true, true, false);
+            OffscreenRenderer.ViewRequest culled = scene.drawnBy(gl).request();
             ViewCapture[] first = gl.render(terrain.root(), culled, new long[2]);
             ViewCapture[] every = gl.render(terrain.root(), culled.withBackFaces(), new long[2]);
             ViewCapture[] again = gl.render(terrain.root(), culled, new long[2]);

@@ -4,16 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.jme3.material.Material;
-import com.jme3.scene.Geometry;
-import dempano.SharedData;
-import dempano.dem.DemDirectory;
-import dempano.dem.MissingTilePolicy;
-import dempano.dem.Mosaic;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
-import dempano.panorama.DepthMode;
-import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.SeenTriangles;
 import dempano.panorama.ViewCapture;
 import dempano.panorama.ViewLayout;
@@ -41,29 +33,19 @@ class TriangleIdentityTest {
     })
     void eachSampleNamesTheTriangleItsRayMeets(String place, double lat, double lon, double eyeHeightMetres,
                                                double rangeMetres) {
-        Mosaic mosaic = Mosaic.around(new DemDirectory(SharedData.demDir()), lat, lon, rangeMetres,
-                MissingTilePolicy.SEA_LEVEL);
-        Viewpoint eye = Viewpoint.onDem(mosaic, lat, lon, 0, eyeHeightMetres);
-        Refraction refraction = new Refraction(0.13);
-        double ppd = 10;
-        TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, refraction, rangeMetres, null,
-                TerrainBuilder.Detail.of(ppd, 0.5));
+        RealSceneViews scene = RealSceneViews.of(lat, lon, eyeHeightMetres, rangeMetres);
+        TerrainBuilder.Terrain terrain = scene.terrain();
+        ViewLayout layout = scene.layout();
+        Viewpoint eye = scene.eye();
+        Refraction refraction = scene.refraction();
         int levels = 0;
         for (int n : terrain.patchesPerLevel()) {
             levels += n > 0 ? 1 : 0;
         }
         assertTrue(levels >= 3, "full-resolution and simplified patches: " + Arrays.toString(terrain.patchesPerLevel()));
-        ViewLayout layout = ViewLayout.forPanorama(PanoramaGeometry.of(ppd, -15, 15), 8, 1);
         try (OffscreenRenderer.Handle handle = OffscreenRenderer.acquire()) {
             OffscreenRenderer gl = handle.renderer();
-            Material material = gl.newTerrainMaterial(rangeMetres);
-            material.setBoolean("DistanceOnly", true);
-            new EyePlacement(eye, refraction).apply(material);
-            for (Geometry g : terrain.drawn()) {
-                g.setMaterial(material);
-            }
-            OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, DepthMode.SHADER_RANGE, 1,
-                    rangeMetres * 1.1 + 20_000, false, true, true, false);
+            OffscreenRenderer.ViewRequest request = scene.drawnBy(gl).request();
             ViewCapture[] captures = gl.render(terrain.root(), request, new long[2]);
             int[] bases = TerrainBuilder.vertexBases(terrain.drawn());
             assertEquals(terrain.drawn().size(), bases.length - 1);
