@@ -207,7 +207,8 @@ public final class OffscreenRenderer {
      *                    for exact per-pixel distances
      * @param release     free the scene's GL buffers afterwards (for single-use scenes)
      * @param drawBackFaces draw terrain faces turned away from the eye too (slower; the same picture wherever the
-     *                    terrain is seen from above: for checking that); false culls them ({@link FacingSplit})
+     *                    terrain is seen from above: for checking that); false culls them
+     *                    ({@link TerrainBuilder#CULL_BACK_FACES}: one draw call per geometry)
      */
     public record ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
                               boolean rangeTarget, boolean surfaces, boolean release, boolean drawBackFaces) {
@@ -217,7 +218,7 @@ public final class OffscreenRenderer {
             }
         }
 
-        /** With back faces culled (the default: see {@link FacingSplit}). */
+        /** With back faces culled (the default: see {@link TerrainBuilder#CULL_BACK_FACES}). */
         public ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
                            boolean rangeTarget, boolean surfaces, boolean release) {
             this(layout, mode, nearMetres, farMetres, colour, rangeTarget, surfaces, release, false);
@@ -476,17 +477,6 @@ public final class OffscreenRenderer {
         }
 
         ViewCapture[] renderViews(Node scene, ViewRequest request, long[] nanos) {
-            FacingSplit split = request.drawBackFaces() ? null : FacingSplit.of(scene);
-            try {
-                return renderViewsAsGiven(scene, request, nanos);
-            } finally {
-                if (split != null) {
-                    split.undo();
-                }
-            }
-        }
-
-        private ViewCapture[] renderViewsAsGiven(Node scene, ViewRequest request, long[] nanos) {
             ViewLayout layout = request.layout();
             DepthMode mode = request.mode();
             double near = request.nearMetres(), far = request.farMetres();
@@ -502,7 +492,7 @@ public final class OffscreenRenderer {
                     ? reversedProjection(-half, half, layout.bottomTan(), layout.topTan(), near)
                     : standardProjection(-half, half, layout.bottomTan(), layout.topTan(), near, far));
             cam.setLocation(Vector3f.ZERO);
-            setDepthState(scene, reversed);
+            setDepthState(scene, reversed, request.drawBackFaces());
             scene.updateLogicalState(0);
             scene.updateGeometricState();
             ViewPort vp = renderManager.createPreView("dempano-view", cam);
@@ -513,10 +503,6 @@ public final class OffscreenRenderer {
             // origin of every view; jME's hierarchical bounds are not relied on).
             java.util.List<Geometry> geometries = new java.util.ArrayList<>();
             scene.depthFirstTraversal(sp -> {
-                if (FacingSplit.drawnByItsParts(sp)) {
-                    sp.setCullHint(Spatial.CullHint.Always);
-                    return;
-                }
                 sp.setCullHint(Spatial.CullHint.Never);
                 if (sp instanceof Geometry g) {
                     geometries.add(g);
@@ -619,14 +605,19 @@ public final class OffscreenRenderer {
             return out;
         }
 
-        private static void setDepthState(Spatial s, boolean reversed) {
+        /**
+         * The depth test for the projection, and the faces culled: the back faces of terrain whose triangles all face
+         * out ({@link TerrainBuilder#CULL_BACK_FACES}), unless asked to draw them; none of any other geometry.
+         */
+        private static void setDepthState(Spatial s, boolean reversed, boolean drawBackFaces) {
             if (s instanceof Geometry g) {
                 RenderState rs = g.getMaterial().getAdditionalRenderState();
                 rs.setDepthFunc(reversed ? RenderState.TestFunction.GreaterOrEqual : RenderState.TestFunction.LessOrEqual);
-                rs.setFaceCullMode(FacingSplit.cullModeOf(g));
+                rs.setFaceCullMode(!drawBackFaces && Boolean.TRUE.equals(g.getUserData(TerrainBuilder.CULL_BACK_FACES))
+                        ? RenderState.FaceCullMode.Back : RenderState.FaceCullMode.Off);
             } else if (s instanceof Node n) {
                 for (Spatial c : n.getChildren()) {
-                    setDepthState(c, reversed);
+                    setDepthState(c, reversed, drawBackFaces);
                 }
             }
         }
@@ -636,107 +627,10 @@ public final class OffscreenRenderer {
                 for (VertexBuffer vb : g.getMesh().getBufferList()) {
                     renderer.deleteBuffer(vb);
                 }
-                // The facing classes' index buffers (level 0 is the mesh's own, deleted above; one never drawn has
-                // no GL buffer, and deleting it does nothing).
-                for (int level = 1; level < g.getMesh().getNumLodLevels(); level++) {
-                    renderer.deleteBuffer(g.getMesh().getLodLevel(level));
-                }
             } else if (s instanceof Node n) {
                 for (Spatial c : n.getChildren()) {
                     deleteGlBuffers(renderer, c);
                 }
-            }
-        }
-    }
-
-    /**
-     * Faces turned away from the eye culled, on terrain meshes whose triangles are grouped by facing class
-     * ({@link dempano.terrain.TerrainBuilder#LEVEL_COUNTER_CLOCKWISE}): for a render, each such geometry is hidden and
-     * drawn by up to three parts beside it, meshes on its own vertex buffers (uploaded once, shared) with one class's
-     * index buffer each: the counter-clockwise class culling GL's back faces, the clockwise class culling GL's front
-     * faces (for it, the faces turned away), the skirts culling none. The faces drawn are the faces turned to the
-     * eye, and the names the shader writes are those it writes with nothing culled (the winding still tells the two
-     * triangles of a vertex apart). Each vertex is shaded once per part that uses it (twice, where one draw call
-     * shaded it once), but llvmpipe's set-up and rasterization of the faces turned away (about half of the
-     * triangles drawn) is saved: drawing 7–11 % faster (median of alternating warm renders, srtm3 and Mount
-     * Washington). Undone after the views: the scene and its geometries are the caller's, and a cached geometry is
-     * drawn again.
-     */
-    private static final class FacingSplit {
-        private final List<Geometry> split = new ArrayList<>(), added = new ArrayList<>();
-
-        static FacingSplit of(Node scene) {
-            FacingSplit f = new FacingSplit();
-            List<Geometry> all = new ArrayList<>();
-            scene.depthFirstTraversal(sp -> {
-                if (sp instanceof Geometry g && g.getMesh().getNumLodLevels() == TerrainBuilder.LEVEL_SKIRTS + 1) {
-                    all.add(g);
-                }
-            });
-            // One material per original material and class (clones: the caller's material is left as it was).
-            Map<Material, Material[]> byClass = new IdentityHashMap<>();
-            for (Geometry g : all) {
-                Material[] m = byClass.computeIfAbsent(g.getMaterial(), o -> new Material[] {
-                        null, o.clone(), o.clone(), o.clone()});
-                Mesh mesh = g.getMesh();
-                f.split.add(g);
-                g.setUserData(FACING_LEVEL, 0); // drawn by its parts
-                for (int level = TerrainBuilder.LEVEL_COUNTER_CLOCKWISE; level <= TerrainBuilder.LEVEL_SKIRTS; level++) {
-                    VertexBuffer indices = mesh.getLodLevel(level);
-                    if (indices.getData().limit() == 0) {
-                        continue; // no triangle of that class (a patch without skirts)
-                    }
-                    // A mesh of the class's triangles on the same vertex buffers (uploaded once, shared).
-                    Mesh part = new Mesh();
-                    part.setMode(Mesh.Mode.Triangles);
-                    for (VertexBuffer vb : mesh.getBufferList()) {
-                        if (vb.getBufferType() != VertexBuffer.Type.Index) {
-                            part.setBuffer(vb);
-                        }
-                    }
-                    part.setBuffer(indices);
-                    part.updateCounts();
-                    part.setBound(mesh.getBound().clone());
-                    Geometry piece = new Geometry(g.getName() + " " + level, part);
-                    piece.setLocalTransform(g.getLocalTransform());
-                    piece.setMaterial(m[level]);
-                    piece.setUserData(FACING_LEVEL, level);
-                    // The mesh's bound is eye-relative, as set by the terrain builder: azimuth culling takes it as set.
-                    piece.setUserData(TerrainBuilder.EYE_BOUND, g.getUserData(TerrainBuilder.EYE_BOUND));
-                    for (MatParamOverride o : g.getLocalMatParamOverrides()) {
-                        piece.addMatParamOverride(o);
-                    }
-                    g.getParent().attachChild(piece);
-                    f.added.add(piece);
-                }
-            }
-            return f;
-        }
-
-        private static final String FACING_LEVEL = "dempano.facingLevel";
-
-        /** Whether a spatial is a split geometry, drawn by the parts beside it. */
-        static boolean drawnByItsParts(Spatial s) {
-            return s instanceof Geometry g && Integer.valueOf(0).equals(g.getUserData(FACING_LEVEL));
-        }
-
-        /** GL's culling for a geometry: back faces for the counter-clockwise class, front faces for the clockwise one. */
-        static RenderState.FaceCullMode cullModeOf(Geometry g) {
-            Integer level = g.getUserData(FACING_LEVEL);
-            return level == null ? RenderState.FaceCullMode.Off : switch (level) {
-                case TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> RenderState.FaceCullMode.Back;
-                case TerrainBuilder.LEVEL_CLOCKWISE -> RenderState.FaceCullMode.Front;
-                default -> RenderState.FaceCullMode.Off; // the skirts, and a split geometry itself (not drawn)
-            };
-        }
-
-        void undo() {
-            for (Geometry part : added) {
-                part.removeFromParent();
-            }
-            for (Geometry g : split) {
-                g.setUserData(FACING_LEVEL, null);
-                g.setCullHint(Spatial.CullHint.Inherit);
             }
         }
     }

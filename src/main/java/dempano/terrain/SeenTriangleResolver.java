@@ -13,7 +13,7 @@ import java.util.stream.IntStream;
 
 /**
  * Turns the views' per-sample surface names (see {@link ViewCapture#triangleIds()} and
- * {@link TerrainBuilder#VERTEX_BASE}: the provoking vertex's number in the scene and the facing)
+ * {@link TerrainBuilder#VERTEX_BASE}: the provoking vertex's number in the scene and the side of it)
  * into {@link SeenTriangles}: each distinct triangle seen, its
  * vertices read from the geometry's own buffers (ECEF double-single, exact to micrometres) and
  * placed as the shader places them, in double precision ({@link EyePlacement#place}). Must run while
@@ -79,8 +79,7 @@ public final class SeenTriangleResolver {
         // 3. Each name to the triangle it names (−1 for none: never expected).
         int[] kg = keyGeometry, kn = keyName;
         int[] primitiveOfKey = new int[keys];
-        double[] eye = placement.eyeEcef();
-        IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key], placement, eye));
+        IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key]));
         // 4. Distinct triangles, numbered compactly. A triangle is named only through its last vertex
         // (names 2v and 2v + 1), so its keys are adjacent: comparing with the key before finds repeats.
         int[] compactOfKey = new int[keys];
@@ -146,7 +145,7 @@ public final class SeenTriangleResolver {
      * thread-safe once built), and which triangles end on each vertex.
      */
     private static final class Buffers {
-        final FloatBuffer high, low, up;
+        final FloatBuffer high, low, up, texCoords;
         final IndexBuffer index;
         /** Per vertex, the (at most two) triangles it is the last vertex of, in index order; −1 for none. */
         private final int[] lastOf;
@@ -155,6 +154,7 @@ public final class SeenTriangleResolver {
             high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
             low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
             up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
+            texCoords = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
             index = mesh.getIndexBuffer();
             int triangles = index.size() / 3;
             lastOf = new int[2 * mesh.getVertexCount()];
@@ -173,85 +173,33 @@ public final class SeenTriangleResolver {
         }
 
         /**
-         * The triangle a name (twice the provoking vertex, plus 1 when seen from its back) names:
-         * the vertex's only triangle, or of its two (wound oppositely) the one that shows the eye
-         * the side it was seen from; where both or neither do (the eye above one's plane and below
-         * the other's, or in one's plane), the one wound counter-clockwise seen from above when
-         * seen from the front, the clockwise one when from the back (terrain is mostly seen from
-         * above). −1 when the vertex ends no triangle.
+         * The triangle a name (twice the provoking vertex, plus the bit of {@link TerrainBuilder#VERTEX_BASE})
+         * names: the vertex's only triangle, or of its two the one on the bit's side. −1 when the vertex ends no
+         * triangle.
          */
-        int triangleNamed(int name, EyePlacement placement, double[] eye) {
+        int triangleNamed(int name) {
             int v = name >>> 1;
             int first = lastOf[2 * v], second = lastOf[2 * v + 1];
             if (second < 0) {
                 return first;
             }
-            boolean back = (name & 1) != 0;
-            // GL's rule: wound counter-clockwise on screen is the front.
-            double f = facingTheEye(first, placement, eye), s = facingTheEye(second, placement, eye);
-            boolean firstFits = back ? f < 0 : f > 0, secondFits = back ? s < 0 : s > 0;
-            if (firstFits != secondFits) {
-                return firstFits ? first : second;
-            }
-            double a = windingSeenFromAbove(first), b = windingSeenFromAbove(second);
-            if (a > 0 && b < 0) {
-                return back ? second : first;
-            }
-            if (a < 0 && b > 0) {
-                return back ? first : second;
-            }
-            return first; // a degenerate cell (beyond the mosaic's edge), or walls edge-on: either serves
+            int bit = name & 1;
+            return bitOf(first) == bit || bitOf(second) != bit ? first : second;
         }
 
         /**
-         * The sign of {@link #facingTheEyePlaced}, from the vertices as stored (ECEF, no lift) where
-         * that is beyond doubt: refraction lifts a vertex d metres away by k·d²/2R, which moves a
-         * triangle's plane at the eye by less than 4·|k|·d²/2R (lift and tilt); only closer to the
-         * plane than that (grazing incidence) are the vertices placed as the shader places them.
-         *
-         * @param eye the eye, ECEF metres
+         * The bit the shader writes for samples of a triangle ({@link TerrainBuilder#VERTEX_BASE}): 0 where the
+         * naming rule's f, summed over its other two vertices, is positive.
          */
-        private double facingTheEye(int p, EyePlacement placement, double[] eye) {
-            double[] q = ecefNormal(p);
-            double nx = q[3], ny = q[4], nz = q[5];
-            double tx = eye[0] - q[0], ty = eye[1] - q[1], tz = eye[2] - q[2];
-            double facing = nx * tx + ny * ty + nz * tz;
-            double squared = tx * tx + ty * ty + tz * tz;
-            double doubt = (4 * Math.abs(placement.liftPerSquareMetre()) * squared + 1)
-                    * Math.sqrt(nx * nx + ny * ny + nz * nz);
-            return Math.abs(facing) > doubt ? facing : facingTheEyePlaced(p, placement);
-        }
-
-        /**
-         * Positive when a triangle, placed for the eye, turns its front (the side from which it is
-         * wound counter-clockwise) to the eye; negative for its back, 0 edge-on.
-         */
-        private double facingTheEyePlaced(int p, EyePlacement placement) {
-            double[] v = new double[9];
-            place(p, placement, v);
-            double e1x = v[3] - v[0], e1y = v[4] - v[1], e1z = v[5] - v[2];
-            double e2x = v[6] - v[0], e2y = v[7] - v[1], e2z = v[8] - v[2];
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            return -(nx * v[0] + ny * v[1] + nz * v[2]); // n · (eye − first vertex), the eye at the origin
-        }
-
-        /**
-         * Positive for a triangle wound counter-clockwise seen from above (along its first vertex's
-         * ellipsoid normal), negative for clockwise, 0 for none (degenerate). ECEF in double.
-         */
-        private double windingSeenFromAbove(int p) {
-            double[] q = ecefNormal(p);
-            int a = 4 * index.get(3 * p);
-            return q[3] * up.get(a) + q[4] * up.get(a + 1) + q[5] * up.get(a + 2);
-        }
-
-        /** A triangle's first vertex and the cross product of its edges (drawn order), ECEF in double: 6 values. */
-        private double[] ecefNormal(int p) {
-            int a = index.get(3 * p), b = index.get(3 * p + 1), c = index.get(3 * p + 2);
-            double ax = at(3 * a), ay = at(3 * a + 1), az = at(3 * a + 2);
-            double e1x = at(3 * b) - ax, e1y = at(3 * b + 1) - ay, e1z = at(3 * b + 2) - az;
-            double e2x = at(3 * c) - ax, e2y = at(3 * c + 1) - ay, e2z = at(3 * c + 2) - az;
-            return new double[] {ax, ay, az, e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x};
+        int bitOf(int p) {
+            int last = index.get(3 * p + 2);
+            int rule = (int) texCoords.get(4 * last + 1) & TerrainBuilder.NAMED_MASK;
+            double row = texCoords.get(4 * last + 2), col = texCoords.get(4 * last + 3), f = 0;
+            for (int corner = 0; corner < 2; corner++) {
+                int v = index.get(3 * p + corner);
+                f += TerrainBuilder.namingSide(rule, texCoords.get(4 * v + 2) - row, texCoords.get(4 * v + 3) - col);
+            }
+            return f > 0 ? 0 : 1;
         }
 
         /** A triangle's three vertices placed as the shader places them (eye frame, double) into {@code v[0..8]}. */

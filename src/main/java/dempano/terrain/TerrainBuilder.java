@@ -43,7 +43,8 @@ import java.util.stream.IntStream;
  * resolution, geomipmapping by fixed distance) is not used: the quads and patches are filled here.
  *
  * <p>Each vertex also carries, in its first texture coordinate, the terrain elevation in metres
- * (for colouring).
+ * (for colouring), its flags and its grid position in the patch (which name the triangles:
+ * {@link #VERTEX_BASE}).
  */
 public final class TerrainBuilder {
     /** Cells per TerrainQuad block side (a power of two). */
@@ -80,30 +81,54 @@ public final class TerrainBuilder {
      * The material parameter, set per geometry as an override, that numbers the vertices of one
      * build: the scene's number of the geometry's first vertex ({@link #vertexBases}).
      *
-     * <p>What the shader writes per sample is {@code 2 × (base + provoking vertex) + (front-facing ?
-     * 0 : 1)}. Every mesh this class builds keeps this contract, which makes that a triangle's
-     * name: each vertex is the last (GL's provoking) vertex of at most two triangles, and where of
-     * two, one of them is wound counter-clockwise seen from above and the other clockwise (a
-     * terrain triangle is seen from above, so the facing tells them apart; the two of a skirt are
-     * both skirt). {@link SeenTriangleResolver} reads it back. The shader does not read
-     * gl_PrimitiveID because llvmpipe then assembles each triangle apart and shades every vertex
-     * once per triangle (draw 1.65 s against 0.88 s at srtm3-150km).
+     * <p>What the shader writes per sample is {@code 2 × (base + provoking vertex) + bit}. Every
+     * mesh this class builds keeps this contract, which makes that a triangle's name: each vertex
+     * is the last (GL's provoking) vertex of at most two triangles, and the bit tells the two
+     * apart by where the sample lies in the patch's grid. Each vertex carries its grid row and
+     * column in the patch (texture coordinate z, w) and, in its flags (texture coordinate y), how
+     * the triangles it ends are told apart ({@link #NAMED_MASK}): with Δrow, Δcol of a point
+     * relative to the provoking vertex, f = Δcol − Δrow ({@link #NAMED_NW_SE}), Δrow + Δcol
+     * ({@link #NAMED_NE_SW}), Δcol ({@link #NAMED_ALONG_COLUMNS}) or Δrow
+     * ({@link #NAMED_ALONG_ROWS}); the bit is 0 where f &gt; 0 inside the triangle, else 1. Within
+     * each of its triangles f keeps one sign (its other two vertices' f are of one sign or 0), and
+     * the two triangles a vertex ends have opposite signs, so the shader interpolates the grid
+     * position and compares, and {@link SeenTriangleResolver} sums f over the other two vertices.
+     * The bit does not depend on the winding or the eye: every triangle faces out (cells up,
+     * skirts out of their patch), so one draw call may cull the back faces
+     * ({@link #CULL_BACK_FACES}). The shader does not read gl_PrimitiveID because llvmpipe then
+     * assembles each triangle apart and shades every vertex once per triangle (draw 1.65 s against
+     * 0.88 s at srtm3-150km).
      */
     public static final String VERTEX_BASE = "VertexBase";
 
+    /** The naming rules of {@link #VERTEX_BASE}, as flag bits (above the debug flags 1, 2, 4). */
+    public static final int NAMED_NW_SE = 0, NAMED_NE_SW = 8, NAMED_ALONG_COLUMNS = 16, NAMED_ALONG_ROWS = 24,
+            NAMED_MASK = 24;
+
     /**
-     * Every terrain mesh's triangles are grouped by facing class, and its level-of-detail index buffers
-     * ({@link Mesh#getLodLevel}) give them apart, as views of its one index buffer: level 0 all of them (what a
-     * renderer draws by default), level 1 those wound counter-clockwise seen from above (each cell's first), level
-     * 2 those wound clockwise seen from above (each cell's second; see {@link #VERTEX_BASE}: the winding names
-     * them), level 3 the skirts'. A renderer that culls back faces draws level 1 culling GL's back faces, level 2
-     * culling GL's front faces (the faces turned away from the eye, for the clockwise ones) and level 3 culling
-     * none (a skirt may be seen from either side): the faces drawn are the same as with no culling wherever the
-     * terrain is seen from above, and a terrain face turned away from the eye is hidden behind the surface in
-     * front of it anyway. {@link dempano.render.OffscreenRenderer} draws so: 7–11 % less drawing on llvmpipe
-     * (each vertex is shaded once per class that uses it).
+     * {@link #VERTEX_BASE}'s f at a point Δrow, Δcol from the provoking vertex, under a naming rule.
+     *
+     * @param rule one of {@link #NAMED_NW_SE}, {@link #NAMED_NE_SW}, {@link #NAMED_ALONG_COLUMNS},
+     *             {@link #NAMED_ALONG_ROWS}
      */
-    public static final int LEVEL_COUNTER_CLOCKWISE = 1, LEVEL_CLOCKWISE = 2, LEVEL_SKIRTS = 3;
+    public static double namingSide(int rule, double deltaRow, double deltaCol) {
+        return switch (rule) {
+            case NAMED_NW_SE -> deltaCol - deltaRow;
+            case NAMED_NE_SW -> deltaRow + deltaCol;
+            case NAMED_ALONG_COLUMNS -> deltaCol;
+            default -> deltaRow;
+        };
+    }
+
+    /**
+     * User data on a terrain geometry (true): every triangle faces out, GL's front (wound
+     * counter-clockwise) on the side it is meant to be seen from: a cell's triangles from above, a
+     * skirt from outside its patch (the crack it hides is seen from the neighbour's side; a skirt seen
+     * from inside its patch is below that patch's surface). A renderer may cull the back faces:
+     * wherever the terrain is seen from above, the faces drawn are those it draws with none culled.
+     * {@link dempano.render.OffscreenRenderer} does, in one draw call.
+     */
+    public static final String CULL_BACK_FACES = "dempano.cullBackFaces";
 
     /**
      * The scene's number of each drawn geometry's first vertex, and the total last: geometry g
@@ -409,6 +434,7 @@ public final class TerrainBuilder {
         drawn.add(g);
         g.setModelBound(placement.bound(hull));
         g.setUserData(EYE_BOUND, true);
+        g.setUserData(CULL_BACK_FACES, true);
         quad.attachChild(g);
     }
 
@@ -611,7 +637,7 @@ public final class TerrainBuilder {
      * convex hull holds the patch ({@code hull}, 24 doubles).
      */
     record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
-                     int cellTriangles, double[] hull) {
+                     double[] hull) {
 
         int vertexCount() {
             return high.length / 3;
@@ -626,7 +652,7 @@ public final class TerrainBuilder {
             }
             FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), low = BufferUtils.createFloatBuffer(nv * 3);
             FloatBuffer up = BufferUtils.createFloatBuffer(nv * 4), nor = BufferUtils.createFloatBuffer(nv * 3);
-            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 2);
+            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 4);
             boolean shortIndices = nv <= 65536;
             ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
             IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
@@ -637,27 +663,20 @@ public final class TerrainBuilder {
                 nor.put(m.normals);
                 tex.put(m.texCoords);
             }
-            // The triangles class by class (LEVEL_COUNTER_CLOCKWISE, LEVEL_CLOCKWISE, LEVEL_SKIRTS), each class's
-            // part by part, gathered in a heap array and put in one bulk copy (a put per index cost most of a warm
-            // render's mesh stage).
-            int[] classEnd = new int[3];
+            // The triangles part by part, gathered in a heap array and put in one bulk copy (a put per index cost
+            // most of a warm render's mesh stage).
             short[] shorts = shortIndices ? new short[ni] : null;
             int[] ints = shortIndices ? null : new int[ni];
-            int at = 0;
-            for (int facing = 0; facing < 3; facing++) {
-                int base = 0;
-                for (PatchMesh m : parts) {
-                    int[] classStart = {0, 3 * m.cellTriangles, 6 * m.cellTriangles, m.indices.length};
-                    for (int k = classStart[facing]; k < classStart[facing + 1]; k++, at++) {
-                        if (shortIndices) {
-                            shorts[at] = (short) (base + m.indices[k]);
-                        } else {
-                            ints[at] = base + m.indices[k];
-                        }
+            int at = 0, base = 0;
+            for (PatchMesh m : parts) {
+                for (int k = 0; k < m.indices.length; k++, at++) {
+                    if (shortIndices) {
+                        shorts[at] = (short) (base + m.indices[k]);
+                    } else {
+                        ints[at] = base + m.indices[k];
                     }
-                    base += m.vertexCount();
                 }
-                classEnd[facing] = at;
+                base += m.vertexCount();
             }
             if (shortIndices) {
                 si.put(shorts);
@@ -670,24 +689,12 @@ public final class TerrainBuilder {
             mesh.setBuffer(VertexBuffer.Type.TexCoord2, 3, low.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
             mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
-            mesh.setBuffer(VertexBuffer.Type.TexCoord, 2, tex.flip());
+            mesh.setBuffer(VertexBuffer.Type.TexCoord, 4, tex.flip());
             if (shortIndices) {
                 mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
             } else {
                 mesh.setBuffer(VertexBuffer.Type.Index, 3, ii.flip());
             }
-            VertexBuffer[] lods = new VertexBuffer[LEVEL_SKIRTS + 1];
-            lods[0] = mesh.getBuffer(VertexBuffer.Type.Index);
-            for (int facing = 0, from = 0; facing < 3; from = classEnd[facing++]) {
-                // A view of the one index array (no copy): the class's triangles.
-                java.nio.Buffer part = shortIndices ? si.duplicate().position(from).limit(classEnd[facing]).slice()
-                        : ii.duplicate().position(from).limit(classEnd[facing]).slice();
-                VertexBuffer lod = new VertexBuffer(VertexBuffer.Type.Index);
-                lod.setupData(VertexBuffer.Usage.Static, 3, shortIndices ? VertexBuffer.Format.UnsignedShort
-                        : VertexBuffer.Format.UnsignedInt, part);
-                lods[LEVEL_COUNTER_CLOCKWISE + facing] = lod;
-            }
-            mesh.setLodLevels(lods);
             mesh.updateCounts();
             return mesh;
         }
@@ -772,7 +779,7 @@ public final class TerrainBuilder {
             }
             int n = cs * cs + skirted * cs;
             float[] high = new float[n * 3], low = new float[n * 3];
-            float[] up = new float[n * 4], normals = new float[n * 3], elevations = new float[n * 2];
+            float[] up = new float[n * 4], normals = new float[n * 3], elevations = new float[n * 4];
             double[] foot = new double[3];
             for (int gi = 0; gi < cs; gi++) {
                 int r = clampRow(mosaic, w.row0 + gi * step);
@@ -780,9 +787,15 @@ public final class TerrainBuilder {
                     int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
                     float h = drawnHeight(mosaic, r, c);
                     place(r, c, h * exaggeration, 0, foot, high, low, up, k);
-                    elevations[2 * k] = h;
+                    elevations[4 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
-                    elevations[2 * k + 1] = mosaic.flags(r, c) | (seam ? 4 : 0);
+                    // The split of the cell whose north-west corner this is (a chessboard: the same for the cell
+                    // whose south-east corner it is) tells the triangles it ends apart (see VERTEX_BASE).
+                    boolean nwToSe = step == 1 ? Triangulation.splitsNorthWestToSouthEast(w.row0 + gi, w.col0 + gj)
+                            : Triangulation.splitsNorthWestToSouthEast(gi, gj);
+                    elevations[4 * k + 1] = mosaic.flags(r, c) | (seam ? 4 : 0) | (nwToSe ? NAMED_NW_SE : NAMED_NE_SW);
+                    elevations[4 * k + 2] = gi;
+                    elevations[4 * k + 3] = gj;
                 }
             }
             // Normals (ECEF) from the exact positions: central differences over the drawn grid.
@@ -809,32 +822,27 @@ public final class TerrainBuilder {
             }
             int cellTriangles = (cs - 1) * (cs - 1), triangles = cellTriangles * 2 + skirted * 2 * (cs - 1);
             int[] indices = new int[triangles * 3];
-            // Grouped by facing class (see LEVEL_COUNTER_CLOCKWISE): each cell's counter-clockwise triangle among the first
-            // cellTriangles, its clockwise one among the next, then the skirts'.
-            int at = 0, cw = 3 * cellTriangles;
+            int at = 0;
             for (int gi = 0; gi < cs - 1; gi++) {
                 for (int gj = 0; gj < cs - 1; gj++) {
                     int nw = gi * cs + gj, ne = nw + 1, sw = nw + cs, se = sw + 1;
                     boolean nwToSe = step == 1 ? Triangulation.splitsNorthWestToSouthEast(w.row0 + gi, w.col0 + gj)
                             : Triangulation.splitsNorthWestToSouthEast(gi, gj);
-                    // The last vertex of each triangle (GL's provoking vertex) names it with the
-                    // facing (see VERTEX_BASE): a NW–SE cell's two triangles both end on its
-                    // north-west corner, one wound counter-clockwise seen from above, the other
-                    // clockwise; a NE–SW cell's north-western triangle ends there too
-                    // (counter-clockwise), its south-eastern one on its south-east corner
-                    // (clockwise). That corner is the north-west corner of the next cell along the
-                    // diagonal, a NE–SW cell as well (the split alternates like a chessboard),
-                    // whose own north-western triangle is the counter-clockwise one there.
+                    // Every cell triangle wound counter-clockwise seen from above (GL's front, so that back faces
+                    // can be culled in one draw call). The last vertex (GL's provoking vertex) names it (see
+                    // VERTEX_BASE): a NW–SE cell's two triangles both end on its north-west corner; a NE–SW cell's
+                    // north-western triangle ends there too, its south-eastern one on its south-east corner, which
+                    // is the north-west corner of the next cell along the diagonal, a NE–SW cell as well (the split
+                    // alternates like a chessboard).
                     if (nwToSe) {
                         at = put(indices, at, se, ne, nw);
-                        cw = put(indices, cw, se, sw, nw);
+                        at = put(indices, at, sw, se, nw);
                     } else {
                         at = put(indices, at, sw, ne, nw);
-                        cw = put(indices, cw, sw, ne, se);
+                        at = put(indices, at, ne, sw, se);
                     }
                 }
             }
-            at = cw;
             // Each skirted edge's vertices get twins lowered along the ellipsoid normal.
             int twin = cs * cs;
             for (int e = 0; e < 4; e++) {
@@ -844,17 +852,24 @@ public final class TerrainBuilder {
                 for (int t = 0; t < cs; t++) {
                     int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                     int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
-                    place(r, c, elevations[2 * v] * exaggeration, skirtsMetres[e], foot, high, low, up, k);
+                    place(r, c, elevations[4 * v] * exaggeration, skirtsMetres[e], foot, high, low, up, k);
                     System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
-                    elevations[2 * k] = elevations[2 * v];
-                    elevations[2 * k + 1] = elevations[2 * v + 1];
+                    System.arraycopy(elevations, 4 * v, elevations, 4 * k, 4); // the grid position of its top too
+                    elevations[4 * k + 1] = ((int) elevations[4 * v + 1] & ~NAMED_MASK)
+                            | (e % 2 == 0 ? NAMED_ALONG_COLUMNS : NAMED_ALONG_ROWS);
                     if (t > 0) {
-                        // Faces are not culled (see OffscreenRenderer), so one winding serves both
-                        // sides. Twin k is the last vertex of this quad's first triangle and of the
-                        // next quad's second, wound the other way round (see VERTEX_BASE).
+                        // Twin k is the last vertex of this quad's first triangle and of the next quad's second
+                        // (see VERTEX_BASE). Both face out of the patch: the crack a skirt hides is seen from the
+                        // neighbour's side (a skirt seen from inside the patch is below its surface). Edges run
+                        // eastward and southward, so the north and east skirts take one order, the others the other.
                         int a = edgeVertex(e, t - 1, cs), b = v;
-                        at = put(indices, at, a, b, k);
-                        at = put(indices, at, k, a, k - 1);
+                        if (e < 2) {
+                            at = put(indices, at, a, b, k);
+                            at = put(indices, at, a, k, k - 1);
+                        } else {
+                            at = put(indices, at, b, a, k);
+                            at = put(indices, at, k, a, k - 1);
+                        }
                     }
                 }
                 twin += cs;
@@ -876,7 +891,7 @@ public final class TerrainBuilder {
                     hull[6 * q + 3 + a] = footA + highest * (double) up[4 * k + a];
                 }
             }
-            return new PatchMesh(high, low, up, normals, elevations, indices, cellTriangles, hull);
+            return new PatchMesh(high, low, up, normals, elevations, indices, hull);
         }
 
         /** A double as float high part and float remainder. */

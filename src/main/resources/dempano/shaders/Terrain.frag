@@ -3,6 +3,8 @@ in vec3 vNormal;
 in float vElevation;
 flat in int vFlags;
 flat in int vVertex;
+in vec2 vGrid;
+flat in vec2 vGridLast;
 uniform vec3 g_CameraPosition;
 uniform float m_RangeMetres;
 uniform float m_HazeMetres;
@@ -31,12 +33,17 @@ void main() {
     // The camera is at the origin for panoramas; the fly-through moves it.
     float range = length(vPosition - g_CameraPosition);
     // The range's float bits, and what names the triangle seen: its provoking vertex's number in
-    // the scene (the geometry's first vertex's number plus gl_VertexID) and which way it faces.
-    // TerrainBuilder makes every vertex the provoking vertex of at most two triangles, wound
-    // oppositely, so the pair and the facing name one triangle (SeenTriangleResolver). Reading
-    // gl_PrimitiveID instead made llvmpipe assemble every primitive apart and shade each vertex
-    // once per triangle: 1.65 s against 0.88 s of drawing at srtm3-150km (measured).
-    outRange = uvec2(floatBitsToUint(range), uint(2 * (m_VertexBase + vVertex) + (gl_FrontFacing ? 0 : 1)));
+    // the scene (the geometry's first vertex's number plus gl_VertexID) and a bit. TerrainBuilder
+    // makes every vertex the provoking vertex of at most two triangles, which lie on opposite sides
+    // of a line through it in the patch's grid (its naming rule, flags 8–24: the cell's diagonal, the
+    // other diagonal, or across a skirt), so the pair and the side name one triangle
+    // (TerrainBuilder.VERTEX_BASE, SeenTriangleResolver). Reading gl_PrimitiveID instead made
+    // llvmpipe assemble every primitive apart and shade each vertex once per triangle: 1.65 s
+    // against 0.88 s of drawing at srtm3-150km (measured).
+    vec2 d = vGrid - vGridLast; // (rows, columns) from the provoking vertex
+    int rule = vFlags & 24;
+    float side = rule == 0 ? d.y - d.x : rule == 8 ? d.x + d.y : rule == 16 ? d.y : d.x;
+    outRange = uvec2(floatBitsToUint(range), uint(2 * (m_VertexBase + vVertex) + (side > 0.0 ? 0 : 1)));
 #ifdef DISTANCE_ONLY
     outColour = vec4(0.0);
 #else

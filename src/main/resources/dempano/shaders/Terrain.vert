@@ -7,7 +7,8 @@ in vec3 inPosition;      // ECEF, high part (float of the double)
 in vec3 inTexCoord2;     // ECEF, low part (double − high)
 in vec4 inTexCoord3;     // xyz: ellipsoid normal (ECEF); w: height above the ellipsoid as placed, metres
 in vec3 inNormal;        // surface normal (ECEF), for shading
-in vec2 inTexCoord;      // x: terrain elevation, metres; y: debug flags (1 filled void, 2 missing tile, 4 tile seam)
+in vec4 inTexCoord;      // x: terrain elevation, metres; y: flags (debug: 1 filled void, 2 missing tile, 4 tile seam;
+                         // 8, 16, 24: naming rule, see Terrain.frag); zw: grid row and column in the patch
 uniform mat4 g_ViewProjectionMatrix;
 uniform vec3 m_EyeHigh;
 uniform vec3 m_EyeLow;
@@ -19,6 +20,8 @@ out vec3 vNormal;
 out float vElevation;
 flat out int vFlags;      // not interpolated: a triangle takes its provoking vertex's flags
 flat out int vVertex;     // the provoking vertex's number in its geometry (see Terrain.frag)
+out vec2 vGrid;           // the grid position, interpolated ...
+flat out vec2 vGridLast;  // ... and the provoking vertex's: which side of it tells its two triangles apart
 
 void main() {
     precise vec3 rel = (inPosition - m_EyeHigh) + (inTexCoord2 - m_EyeLow);
@@ -31,5 +34,7 @@ void main() {
     vElevation = inTexCoord.x;
     vFlags = int(inTexCoord.y + 0.5);
     vVertex = gl_VertexID;
+    vGrid = inTexCoord.zw;
+    vGridLast = inTexCoord.zw;
     gl_Position = g_ViewProjectionMatrix * vec4(vPosition, 1.0);
 }

@@ -186,12 +186,14 @@ class TerrainBuilderTest {
 
     /**
      * The contract the shader's sample names rest on ({@link TerrainBuilder#VERTEX_BASE}): every
-     * vertex is the last of at most two triangles; of two terrain triangles one is wound
-     * counter-clockwise seen from above and the other clockwise; of two skirt triangles (vertical
-     * walls) the fronts face opposite ways. Full-resolution, simplified and merged patches, skirts.
+     * vertex is the last of at most two triangles; every triangle's corners lie within one cell of
+     * each other in the grid its vertices carry; the naming rule's f keeps one sign over each
+     * triangle (its other two vertices' f are not of opposite signs, and not both 0); and of two
+     * triangles ending at one vertex, one lies where f &gt; 0 and the other where f &lt; 0.
+     * Full-resolution, simplified and merged patches, skirts.
      */
     @Test
-    void everyVertexEndsAtMostTwoTrianglesWoundOppositely() {
+    void everyVertexEndsAtMostTwoTrianglesOnOppositeSides() {
         DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
         TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 60_000, null);
         int levels = 0;
@@ -199,20 +201,34 @@ class TerrainBuilderTest {
             levels += n > 0 ? 1 : 0;
         }
         assertTrue(levels >= 3, Arrays.toString(t.patchesPerLevel()));
-        long pairs = 0, skirtPairs = 0, single = 0;
+        long pairs = 0, single = 0;
+        int[] rulesSeen = new int[4];
         for (Geometry g : t.drawn()) {
             Mesh mesh = g.getMesh();
-            FloatBuffer high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
-            FloatBuffer low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
-            FloatBuffer up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
+            FloatBuffer tex = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
+            assertEquals(4, mesh.getBuffer(VertexBuffer.Type.TexCoord).getNumComponents(), g.getName());
             IndexBuffer index = mesh.getIndexBuffer();
             int triangles = index.size() / 3;
             int[][] endingAt = new int[mesh.getVertexCount()][];
+            double[] side = new double[triangles];
             for (int p = 0; p < triangles; p++) {
                 int v = index.get(3 * p + 2);
                 int[] list = endingAt[v];
                 endingAt[v] = list == null ? new int[] {p} : new int[] {list[0], p};
                 assertTrue(list == null || list.length == 1, "vertex " + v + " ends three triangles or more in " + g.getName());
+                int rule = (int) tex.get(4 * v + 1) & TerrainBuilder.NAMED_MASK;
+                rulesSeen[rule / 8]++;
+                double[] f = new double[2];
+                for (int c = 0; c < 2; c++) {
+                    int u = index.get(3 * p + c);
+                    double dr = tex.get(4 * u + 2) - tex.get(4 * v + 2), dc = tex.get(4 * u + 3) - tex.get(4 * v + 3);
+                    String where = g.getName() + ", triangle " + p;
+                    assertTrue(Math.abs(dr) <= 1 && Math.abs(dc) <= 1, where + ": corners more than a cell apart");
+                    f[c] = TerrainBuilder.namingSide(rule, dr, dc);
+                }
+                String where = g.getName() + ", triangle " + p + ", rule " + rule + ": f " + Arrays.toString(f);
+                assertTrue(f[0] * f[1] >= 0 && (f[0] != 0 || f[1] != 0), where);
+                side[p] = f[0] + f[1];
             }
             for (int[] list : endingAt) {
                 if (list == null) {
@@ -222,77 +238,85 @@ class TerrainBuilderTest {
                     single++;
                     continue;
                 }
-                double[] n0 = normal(index, high, low, list[0]), n1 = normal(index, high, low, list[1]);
-                int v = index.get(3 * list[0] + 2);
-                double up0 = n0[0] * up.get(4 * v) + n0[1] * up.get(4 * v + 1) + n0[2] * up.get(4 * v + 2);
-                double up1 = n1[0] * up.get(4 * v) + n1[1] * up.get(4 * v + 1) + n1[2] * up.get(4 * v + 2);
-                double length0 = Math.sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
-                double length1 = Math.sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
-                if (length0 == 0 || length1 == 0) {
-                    continue; // a degenerate cell beyond the mosaic's edge (rows or columns repeated)
-                }
-                boolean wall = Math.abs(up0) < 1e-3 * length0; // a skirt: vertical
-                if (wall) {
-                    skirtPairs++;
-                    assertTrue(n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2] < 0, "a skirt's two walls face one way in " + g.getName());
-                } else {
-                    pairs++;
-                    assertTrue(up0 * up1 < 0, "two terrain triangles ending at vertex " + v + " wound alike in " + g.getName());
-                }
+                pairs++;
+                assertTrue(side[list[0]] * side[list[1]] < 0, g.getName() + ": triangles " + list[0] + " and " + list[1]
+                        + " end at one vertex on one side");
             }
         }
         assertTrue(pairs > single, pairs + " pairs, " + single + " single");
-        assertTrue(skirtPairs > 0, "skirts seen");
+        for (int rule = 0; rule < 4; rule++) {
+            assertTrue(rulesSeen[rule] > 0, "rule " + 8 * rule + " used: " + Arrays.toString(rulesSeen));
+        }
     }
 
     /**
-     * The level-of-detail index buffers split the mesh's triangles by facing class ({@link
-     * TerrainBuilder#LEVEL_COUNTER_CLOCKWISE}), which is what lets a renderer cull the faces turned away from the eye
-     * without losing the winding that names a triangle: levels 1, 2 and 3 laid end to end are level 0, the mesh's
-     * index buffer; every terrain triangle of level 1 is wound counter-clockwise seen from above, every one of level 2
-     * clockwise, and level 3 holds the skirts (vertical walls) and nothing else.
+     * {@link TerrainBuilder#CULL_BACK_FACES}: every terrain triangle is wound counter-clockwise seen from above (its
+     * normal by the right-hand rule rises), every skirt (a vertical wall) faces out of its patch (away from the
+     * cell triangles at its top vertices), and every geometry is marked so.
      */
     @Test
-    void theMeshLevelsGroupTheTrianglesByFacing() {
+    void everyTriangleFacesOut() {
         DemSource dem = Synthetic.tiles(TerrainBuilderTest::relief, Synthetic.N, Synthetic.block(45, 7, 3, 3));
         TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 60_000, null);
-        long[] perLevel = new long[4];
+        long up = 0, walls = 0;
         for (Geometry g : t.drawn()) {
+            assertEquals(Boolean.TRUE, g.getUserData(TerrainBuilder.CULL_BACK_FACES), g.getName());
             Mesh mesh = g.getMesh();
-            assertEquals(TerrainBuilder.LEVEL_SKIRTS + 1, mesh.getNumLodLevels(), g.getName());
-            assertSame(mesh.getBuffer(VertexBuffer.Type.Index), mesh.getLodLevel(0), g.getName());
             FloatBuffer high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
             FloatBuffer low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
-            FloatBuffer up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
-            IndexBuffer all = mesh.getIndexBuffer();
-            int at = 0;
-            for (int level = TerrainBuilder.LEVEL_COUNTER_CLOCKWISE; level <= TerrainBuilder.LEVEL_SKIRTS; level++) {
-                IndexBuffer part = IndexBuffer.wrapIndexBuffer(mesh.getLodLevel(level).getData());
-                for (int i = 0; i < part.size(); i++) {
-                    assertEquals(all.get(at + i), part.get(i), g.getName() + ", level " + level + ", index " + i);
+            FloatBuffer ups = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
+            IndexBuffer index = mesh.getIndexBuffer();
+            int triangles = index.size() / 3;
+            boolean[] wall = new boolean[triangles];
+            double[][] centroidOf = new double[mesh.getVertexCount()][]; // a cell triangle's centroid at each vertex
+            for (int p = 0; p < triangles; p++) {
+                double[] n = normal(index, high, low, p);
+                double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                if (length == 0) {
+                    wall[p] = true; // a degenerate cell beyond the mosaic's edge: no face
+                    continue;
                 }
-                for (int p = 0; p < part.size() / 3; p++) {
-                    double[] n = normal(all, high, low, at / 3 + p);
-                    double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                    if (length == 0) {
-                        continue; // a degenerate cell beyond the mosaic's edge
+                int v = index.get(3 * p);
+                double rise = (n[0] * ups.get(4 * v) + n[1] * ups.get(4 * v + 1) + n[2] * ups.get(4 * v + 2)) / length;
+                wall[p] = Math.abs(rise) < 1e-3;
+                if (!wall[p]) {
+                    assertTrue(rise > 1e-3, g.getName() + ", triangle " + p + ": rise " + rise);
+                    up++;
+                    double[] c = new double[3];
+                    for (int k = 0; k < 3; k++) {
+                        for (int a = 0; a < 3; a++) {
+                            c[a] += position(high, low, index.get(3 * p + k))[a] / 3;
+                        }
                     }
-                    int v = all.get(at + 3 * p);
-                    double rise = (n[0] * up.get(4 * v) + n[1] * up.get(4 * v + 1) + n[2] * up.get(4 * v + 2)) / length;
-                    String where = g.getName() + ", level " + level + ", triangle " + p + ": rise " + rise;
-                    switch (level) {
-                        case TerrainBuilder.LEVEL_COUNTER_CLOCKWISE -> assertTrue(rise > 1e-3, where);
-                        case TerrainBuilder.LEVEL_CLOCKWISE -> assertTrue(rise < -1e-3, where);
-                        default -> assertTrue(Math.abs(rise) < 1e-3, where);
+                    for (int k = 0; k < 3; k++) {
+                        centroidOf[index.get(3 * p + k)] = c;
                     }
-                    perLevel[level]++;
                 }
-                at += part.size();
             }
-            assertEquals(all.size(), at, g.getName() + ": the levels hold every triangle once");
+            for (int p = 0; p < triangles; p++) {
+                double[] n = normal(index, high, low, p);
+                if (!wall[p] || n[0] == 0 && n[1] == 0 && n[2] == 0) {
+                    continue;
+                }
+                for (int k = 0; k < 3; k++) {
+                    int v = index.get(3 * p + k);
+                    if (centroidOf[v] != null) { // a top vertex: the cells beside it are inside the patch
+                        double[] a = position(high, low, v);
+                        double inward = n[0] * (centroidOf[v][0] - a[0]) + n[1] * (centroidOf[v][1] - a[1])
+                                + n[2] * (centroidOf[v][2] - a[2]);
+                        assertTrue(inward < 0, g.getName() + ", skirt triangle " + p + " faces into its patch");
+                        walls++;
+                        break;
+                    }
+                }
+            }
         }
-        assertEquals(perLevel[1], perLevel[2], "each cell gives one triangle to each winding");
-        assertTrue(perLevel[1] > 0 && perLevel[3] > 0, Arrays.toString(perLevel));
+        assertTrue(up > 0 && walls > 0, up + " terrain triangles, " + walls + " skirt triangles");
+    }
+
+    private static double[] position(FloatBuffer high, FloatBuffer low, int k) {
+        return new double[] {high.get(3 * k) + (double) low.get(3 * k), high.get(3 * k + 1) + (double) low.get(3 * k + 1),
+                high.get(3 * k + 2) + (double) low.get(3 * k + 2)};
     }
 
     /** A triangle's normal by the right-hand rule over its drawn order (ECEF, double). */
