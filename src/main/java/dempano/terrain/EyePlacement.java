@@ -36,16 +36,6 @@ public final class EyePlacement {
         liftPerSquareMetre = refraction.liftMetres(1);
     }
 
-    /** The eye's position, ECEF metres (a copy). */
-    public double[] eyeEcef() {
-        return eyeEcef.clone();
-    }
-
-    /** Refraction's lift per square metre of ground distance (k/2R, 1/metres; negative for k < 0). */
-    public double liftPerSquareMetre() {
-        return liftPerSquareMetre;
-    }
-
     /**
      * Where the shader puts a vertex, computed in double precision: the same subtraction of the eye,
      * refraction lift over the ground distance between the feet, and rotation as Terrain.vert.
