@@ -228,9 +228,7 @@ public final class TerrainRayProbe implements RayProbe {
         // the path meets a cell again at its next samples. A collision costs a recomputation of the same value.
         WalkTables w = WalkTables.of(this);
         long stamp = w.nextWalk();
-        long[] vertexKey = w.vertexKey, cellKey = w.cellKey;
-        double[] vertexAt = w.vertexAt;
-        double[] nw = w.nw, ne = w.ne, sw = w.sw, se = w.se, tri = w.tri;
+        long[] cellKey = w.cellKey;
         double best = Double.POSITIVE_INFINITY;
         // Past a hit, cells two cells' length of ray farther on hold only farther hits: the walk stops there.
         double beyond = 2 * cellLongestMetres / Math.max(Math.hypot(e, n), 0.01);
@@ -257,19 +255,7 @@ public final class TerrainRayProbe implements RayProbe {
                     continue;
                 }
                 cellKey[slot] = cell;
-                vertex(r, c, vertexKey, vertexAt, nw);
-                vertex(r, c + 1, vertexKey, vertexAt, ne);
-                vertex(r + 1, c, vertexKey, vertexAt, sw);
-                vertex(r + 1, c + 1, vertexKey, vertexAt, se);
-                double t1, t2;
-                if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
-                    t1 = rayTriangle(e, n, u, nw, ne, se, tri);
-                    t2 = rayTriangle(e, n, u, nw, se, sw, tri);
-                } else {
-                    t1 = rayTriangle(e, n, u, nw, ne, sw, tri);
-                    t2 = rayTriangle(e, n, u, ne, se, sw, tri);
-                }
-                double t = Math.min(t1, t2);
+                double t = cellHit(e, n, u, r, c, w);
                 if (t >= from && t <= to && t < best) {
                     best = t;
                 }
@@ -277,6 +263,28 @@ public final class TerrainRayProbe implements RayProbe {
         }
         return best < Double.POSITIVE_INFINITY ? best : otherwise;
     }
+
+    /**
+     * Distance along the unit ray to the nearer of cell (r, c)'s two triangles, +∞ if it misses both. One call site
+     * for its corners and one for its triangles: inlined four and two times over into the walk, they made the JIT
+     * recompile a large method (0.5–1.1 s of server compiler time in a JVM's first four renders).
+     */
+    private double cellHit(double e, double n, double u, int r, int c, WalkTables w) {
+        double[][] corner = w.corners; // nw, ne, sw, se
+        for (int k = 0; k < 4; k++) {
+            vertex(r + (k >> 1), c + (k & 1), w.vertexKey, w.vertexAt, corner[k]);
+        }
+        boolean nwToSe = Triangulation.splitsNorthWestToSouthEast(r, c);
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < 2; k++) {
+            int[] t = nwToSe ? NW_SE_TRIANGLES[k] : NE_SW_TRIANGLES[k];
+            best = Math.min(best, rayTriangle(e, n, u, corner[t[0]], corner[t[1]], corner[t[2]], w.tri));
+        }
+        return best;
+    }
+
+    /** A cell's two triangles as corners (0 nw, 1 ne, 2 sw, 3 se), as {@link Triangulation} splits it. */
+    private static final int[][] NW_SE_TRIANGLES = {{0, 1, 3}, {0, 3, 2}}, NE_SW_TRIANGLES = {{0, 1, 2}, {1, 3, 2}};
 
     /** Slots of {@link #trianglesBetween}'s cell table (a power of two). */
     private static final int CACHE_SLOTS = 64;
@@ -299,7 +307,8 @@ public final class TerrainRayProbe implements RayProbe {
 
         final long[] vertexKey = new long[VERTEX_SLOTS], cellKey = new long[CACHE_SLOTS];
         final double[] vertexAt = new double[3 * VERTEX_SLOTS];
-        final double[] nw = new double[3], ne = new double[3], sw = new double[3], se = new double[3], tri = new double[9];
+        final double[][] corners = new double[4][3];
+        final double[] tri = new double[9];
         /** Weak: a pool thread's tables must not keep a finished render's probe (and its mosaic) alive. */
         private java.lang.ref.WeakReference<TerrainRayProbe> owner = new java.lang.ref.WeakReference<>(null);
         private long stamp;

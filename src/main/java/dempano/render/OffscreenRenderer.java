@@ -565,13 +565,7 @@ public final class OffscreenRenderer {
                         GL11.glReadPixels(0, 0, w, h, GL30.GL_RG_INTEGER, GL11.GL_UNSIGNED_INT, rangeAndTriangle);
                         rangeAndTriangle.get(pairs); // one bulk copy: the loop below then reads a heap array
                         triangleIds = new int[w * h];
-                        for (int i = 0, o = 0; i < w * h; i++, o += 2) {
-                            float range = Float.intBitsToFloat(pairs[o]);
-                            if (readRangeTarget) {
-                                d[i] = range;
-                            }
-                            triangleIds[i] = range > 0 ? pairs[o + 1] : -1;
-                        }
+                        split(pairs, readRangeTarget ? d : null, triangleIds);
                     }
                     if (!readRangeTarget || !surfaces) {
                         depth.clear();
@@ -603,6 +597,21 @@ public final class OffscreenRenderer {
                 }
             }
             return out;
+        }
+
+        /**
+         * The range target's pairs apart: the ranges into {@code ranges} (unless null) and the triangle names into
+         * {@code triangleIds} (−1 where nothing was drawn). A method of its own so that the JIT compiles this loop
+         * alone, not the whole of renderViews on-stack.
+         */
+        private static void split(int[] pairs, float[] ranges, int[] triangleIds) {
+            for (int i = 0, o = 0; i < triangleIds.length; i++, o += 2) {
+                float range = Float.intBitsToFloat(pairs[o]);
+                if (ranges != null) {
+                    ranges[i] = range;
+                }
+                triangleIds[i] = range > 0 ? pairs[o + 1] : -1;
+            }
         }
 
         /**

@@ -54,25 +54,11 @@ public final class SeenTriangleResolver {
             }
         });
         // 2. Keys in the order of the names (so the numbering does not depend on the threads), with their geometries.
-        int keys = 0;
-        for (int name = 0; name < totalNames; name++) {
-            if (keyOfName[name] != 0) {
-                keyOfName[name] = ++keys; // key + 1, so that 0 stays "unseen"
-            }
-        }
+        // (The serial loops are methods of their own: the JIT then compiles them alone, not all of resolve on-stack.)
+        int keys = numberKeys(keyOfName);
         int[] keyName = new int[keys], keyGeometry = new int[keys];
         boolean[] geometrySeen = new boolean[drawn.size()];
-        for (int name = 0, g = 0; name < totalNames; name++) {
-            if (keyOfName[name] != 0) {
-                while ((name >>> 1) >= bases[g + 1]) {
-                    g++;
-                }
-                int key = keyOfName[name] - 1;
-                keyGeometry[key] = g;
-                keyName[key] = name - 2 * bases[g];
-                geometrySeen[g] = true;
-            }
-        }
+        keysToGeometries(keyOfName, bases, keyName, keyGeometry, geometrySeen);
         Buffers[] buffers = new Buffers[drawn.size()];
         IntStream.range(0, drawn.size()).parallel().filter(g -> geometrySeen[g])
                 .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
@@ -80,23 +66,10 @@ public final class SeenTriangleResolver {
         int[] kg = keyGeometry, kn = keyName;
         int[] primitiveOfKey = new int[keys];
         IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key]));
-        // 4. Distinct triangles, numbered compactly. A triangle is named only through its last vertex
-        // (names 2v and 2v + 1), so its keys are adjacent: comparing with the key before finds repeats.
+        // 4. Distinct triangles, numbered compactly.
         int[] compactOfKey = new int[keys];
         int[] seenGeometry = new int[Math.max(1, keys)], seenPrimitive = new int[Math.max(1, keys)];
-        int seen = 0;
-        for (int key = 0; key < keys; key++) {
-            int g = kg[key], p = primitiveOfKey[key];
-            if (p < 0) {
-                compactOfKey[key] = -1;
-            } else if (seen > 0 && seenGeometry[seen - 1] == g && seenPrimitive[seen - 1] == p) {
-                compactOfKey[key] = seen - 1;
-            } else {
-                seenGeometry[seen] = g;
-                seenPrimitive[seen] = p;
-                compactOfKey[key] = seen++;
-            }
-        }
+        int seen = distinctTriangles(kg, primitiveOfKey, compactOfKey, seenGeometry, seenPrimitive);
         // 5. Each sample's triangle, per view in parallel.
         int[][] triangleOfSample = new int[captures.length][];
         IntStream.range(0, captures.length).parallel().forEach(k -> {
@@ -138,6 +111,55 @@ public final class SeenTriangleResolver {
             }
         });
         return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
+    }
+
+    /** Numbers the names marked 1 in name order, in place (key + 1; 0 stays "unseen"); returns how many. */
+    private static int numberKeys(int[] keyOfName) {
+        int keys = 0;
+        for (int name = 0; name < keyOfName.length; name++) {
+            if (keyOfName[name] != 0) {
+                keyOfName[name] = ++keys;
+            }
+        }
+        return keys;
+    }
+
+    /** Each key's geometry and its name within it, and which geometries are seen at all. */
+    private static void keysToGeometries(int[] keyOfName, int[] bases, int[] keyName, int[] keyGeometry,
+                                         boolean[] geometrySeen) {
+        for (int name = 0, g = 0; name < keyOfName.length; name++) {
+            if (keyOfName[name] != 0) {
+                while ((name >>> 1) >= bases[g + 1]) {
+                    g++;
+                }
+                int key = keyOfName[name] - 1;
+                keyGeometry[key] = g;
+                keyName[key] = name - 2 * bases[g];
+                geometrySeen[g] = true;
+            }
+        }
+    }
+
+    /**
+     * Distinct triangles, numbered compactly; returns how many. A triangle is named only through its last vertex
+     * (names 2v and 2v + 1), so its keys are adjacent: comparing with the key before finds repeats.
+     */
+    private static int distinctTriangles(int[] keyGeometry, int[] primitiveOfKey, int[] compactOfKey, int[] seenGeometry,
+                                         int[] seenPrimitive) {
+        int seen = 0;
+        for (int key = 0; key < compactOfKey.length; key++) {
+            int g = keyGeometry[key], p = primitiveOfKey[key];
+            if (p < 0) {
+                compactOfKey[key] = -1;
+            } else if (seen > 0 && seenGeometry[seen - 1] == g && seenPrimitive[seen - 1] == p) {
+                compactOfKey[key] = seen - 1;
+            } else {
+                seenGeometry[seen] = g;
+                seenPrimitive[seen] = p;
+                compactOfKey[key] = seen++;
+            }
+        }
+        return seen;
     }
 
     /**
