@@ -352,8 +352,19 @@ public final class TerrainBuilder {
         // Pass 3 (parallel): place the vertices of the patches not cached.
         List<PatchWork> toPlace = kept.stream().filter(w -> w.cached == null).toList();
         // Patches of every level: a full-resolution patch places hundreds of times the vertices of a coarse one.
-        dempano.util.Parallel.forEachIndex(toPlace.size(), i -> toPlace.get(i).mesh = placer.mesh(toPlace.get(i),
-                toPlace.get(i).skirts));
+        // A patch drawn alone becomes its jME mesh (direct buffers) at once, so that its heap arrays die young: kept
+        // until every patch was placed, they were 150 MB of a cold Mount Washington render's heap, copied by the
+        // collector two or three times over.
+        dempano.util.Parallel.forEachIndex(toPlace.size(), i -> {
+            PatchWork w = toPlace.get(i);
+            PatchMesh placed = placer.mesh(w, w.skirts);
+            w.hull = placed.hull();
+            if (w.level >= MERGED_LEVEL) {
+                w.mesh = placed;
+            } else {
+                w.alone = PatchMesh.merge(List.of(placed));
+            }
+        });
 
         // Coarse patches (few vertices each) are merged per block into one geometry: tens of
         // thousands of tiny draw calls and buffers cost more than their triangles.
@@ -386,17 +397,19 @@ public final class TerrainBuilder {
                 attach(quad, g, w.cached.hull(), material, placement, drawn);
                 continue;
             }
-            vertices += w.mesh.vertexCount();
-            triangles += w.mesh.indices().length / 3;
             if (w.level >= MERGED_LEVEL) {
+                vertices += w.mesh.vertexCount();
+                triangles += w.mesh.indices().length / 3;
                 merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
             } else {
+                vertices += w.alone.getVertexCount();
+                triangles += w.alone.getTriangleCount();
                 TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
                 patch.setUserData(FULL_RESOLUTION, w.level == 0 && exaggeration == 1);
-                patch.setMesh(PatchMesh.merge(List.of(w.mesh)));
-                attach(quad, patch, w.mesh.hull(), material, placement, drawn);
+                patch.setMesh(w.alone);
+                attach(quad, patch, w.hull, material, placement, drawn);
                 if (w.meshKey != null) {
-                    meshes.put(w.meshKey, new MeshCache.Entry(patch, w.mesh.hull(), w.mesh.vertexCount()));
+                    meshes.put(w.meshKey, new MeshCache.Entry(patch, w.hull, w.alone.getVertexCount()));
                 } else {
                     transientParts.add(patch);
                 }
@@ -623,7 +636,12 @@ public final class TerrainBuilder {
         double[] skirts;
         MeshCache.Key meshKey;
         MeshCache.Entry cached;
+        /** Placed vertices and triangles of a patch merged with others (levels from MERGED_LEVEL). */
         PatchMesh mesh;
+        /** The jME mesh of a patch drawn alone (levels below MERGED_LEVEL). */
+        Mesh alone;
+        /** ECEF points whose hull holds the placed patch. */
+        double[] hull;
 
         double errorMetres() {
             return deviations[level];

@@ -72,10 +72,24 @@ class StartScriptTest {
         assertEquals(4, tieredStopAtLevel(run(Map.of("JAVA_OPTS", "-XX:TieredStopAtLevel=4 -XX:+PrintFlagsFinal"), "--version")[1]));
     }
 
+    /** The same commands get a young generation of 256 MB (batch memory, docs/cold-start.md); a later -Xmn wins. */
+    @Test
+    void panoramasAndBatchesKeepTheYoungGenerationAt256MegabytesUnlessJavaOptsSaysOtherwise() throws Exception {
+        long mb = 1L << 20;
+        assertEquals(256 * mb, flag(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "--version")[1], "MaxNewSize"));
+        assertEquals(256 * mb, flag(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "batch", "--help")[1], "MaxNewSize"));
+        assertTrue(flag(run(Map.of("JAVA_OPTS", "-XX:+PrintFlagsFinal"), "photo", "--help")[1], "MaxNewSize") != 256 * mb);
+        assertEquals(128 * mb, flag(run(Map.of("JAVA_OPTS", "-Xmn128m -XX:+PrintFlagsFinal"), "--version")[1], "MaxNewSize"));
+    }
+
     private static int tieredStopAtLevel(String flagsFinal) {
-        Matcher m = Pattern.compile("\\bTieredStopAtLevel\\s+=\\s+(\\d+)").matcher(flagsFinal);
-        assertTrue(m.find(), "TieredStopAtLevel among the flags");
-        return Integer.parseInt(m.group(1));
+        return (int) flag(flagsFinal, "TieredStopAtLevel");
+    }
+
+    private static long flag(String flagsFinal, String name) {
+        Matcher m = Pattern.compile("\\b" + name + "\\s+=\\s+(\\d+)").matcher(flagsFinal);
+        assertTrue(m.find(), name + " among the flags");
+        return Long.parseLong(m.group(1));
     }
 
     static final Path ARCHIVE = Path.of("build", "install", "dempano", "lib", "dempano.jsa");
