@@ -27,8 +27,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * viewpoint, not enough memory, an unwritable file) is recorded as an error and the next row
  * starts; only a failure of the renderer itself (no OpenGL, the GL thread dying) stops the batch.
  *
- * <p>{@link #cancel()}, from any thread (a shutdown hook on Ctrl-C), lets the row in progress finish
- * and commit its files, records it, and starts no further row. {@link #awaitFinished} waits for
+ * <p>{@link #cancel()}, from any thread (a shutdown hook on Ctrl-C), lets the row in progress (and the
+ * row being written, see {@link #run()}) finish and commit its files, records them, and starts no further row. {@link #awaitFinished} waits for
  * that. Rows not reached are not in the results.
  */
 public final class BatchRun {
@@ -70,7 +70,10 @@ public final class BatchRun {
     }
 
     /**
-     * Renders the rows in order, writing {@code results.csv} line by line.
+     * Renders the rows in order, writing {@code results.csv} line by line. A panorama row's files are written on a
+     * second thread while the next row renders (at most one row is being written, so at most two panoramas are in
+     * memory); its line goes to {@code results.csv}, and {@link BatchListener#rowFinished} is told, once its files are
+     * in place, before the next row's. Its seconds run from its start to its files being in place.
      *
      * @return the summary; {@link BatchSummary#fatal()} is set when the renderer failed and the rest was skipped
      * @throws IOException when {@code results.csv} cannot be created or written (the output folder is
@@ -85,6 +88,12 @@ public final class BatchRun {
         List<BatchResult> results = new ArrayList<>();
         String fatal = null;
         Path resultsFile = BatchRenderer.resultsFile(outDir);
+        java.util.concurrent.ExecutorService writer = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "dempano-batch-writer");
+            t.setDaemon(true);
+            return t;
+        });
+        Writing pending = null;
         try (ResultsCsv csv = create(resultsFile)) {
             quietly(() -> listener.started(rows.size()));
             Map<String, String> seen = new HashMap<>(); // collision key → where the id was first
@@ -104,39 +113,107 @@ public final class BatchRun {
                     result = BatchResult.error(row, prefixed(row, "duplicate id '" + row.id() + "' (first at " + first + ")"), 0);
                 } else {
                     try {
-                        List<Path> files = renderOne(row);
-                        result = BatchResult.ok(row, files, seconds(start));
+                        if (row.photo() != null) {
+                            result = BatchResult.ok(row, renderPhoto(row), seconds(start));
+                        } else {
+                            Rendered rendered = render(row);
+                            // The row before must be in place (and recorded) before this one is written.
+                            finish(pending, csv, results, resultsFile);
+                            pending = new Writing(row, index, start, writer.submit(() -> write(rendered)));
+                            continue;
+                        }
                     } catch (RenderFailedException | GlUnavailableException e) {
                         fatal = message(e);
                         result = BatchResult.error(row, prefixed(row, fatal), seconds(start));
-                    } catch (OutOfMemoryError e) {
-                        result = BatchResult.error(row, prefixed(row, "out of memory (" + e.getMessage()
-                                + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)"), seconds(start));
-                    } catch (IOException e) {
-                        result = BatchResult.error(row, prefixed(row, IoMessages.reason(e)), seconds(start));
-                    } catch (RuntimeException e) {
-                        result = BatchResult.error(row, prefixed(row, message(e)), seconds(start));
+                    } catch (IOException | RuntimeException | OutOfMemoryError e) {
+                        result = failed(row, e, start);
                     }
                 }
-                BatchResult done = result;
-                results.add(done);
-                try {
-                    csv.append(done);
-                } catch (IOException e) {
-                    throw new IOException("cannot write " + resultsFile + ": " + IoMessages.reason(e), e);
-                }
-                quietly(() -> listener.rowFinished(done, index));
+                finish(pending, csv, results, resultsFile);
+                pending = null;
+                record(result, index, csv, results, resultsFile);
                 if (fatal != null) {
                     break;
                 }
             }
+            finish(pending, csv, results, resultsFile);
+            pending = null;
         } finally {
+            if (pending != null) { // results.csv failed: still never leave with a set half written
+                try {
+                    pending.files().get();
+                } catch (Exception e) {
+                    // its failure is not recorded: results.csv could not be written
+                }
+            }
+            writer.shutdown();
             finished.countDown();
         }
         BatchSummary summary = new BatchSummary(results, rows.size(), cancelled.get() && results.size() < rows.size(),
                 fatal, seconds(t0));
         quietly(() -> listener.finished(summary));
         return summary;
+    }
+
+    /** A panorama row being written on the writer thread. */
+    private record Writing(BatchRow row, int index, long start, java.util.concurrent.Future<List<Path>> files) {
+    }
+
+    /** A rendered panorama and its set, opened before rendering. */
+    private record Rendered(OutputSet set, Panorama panorama) {
+    }
+
+    /** Waits for a row's files (null: none pending) and records its result. */
+    private void finish(Writing w, ResultsCsv csv, List<BatchResult> results, Path resultsFile) throws IOException {
+        if (w == null) {
+            return;
+        }
+        BatchResult result;
+        boolean interrupted = false;
+        while (true) {
+            try {
+                result = BatchResult.ok(w.row(), w.files().get(), seconds(w.start()));
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true; // the files are being written: wait for them all the same
+            } catch (java.util.concurrent.ExecutionException e) {
+                result = failed(w.row(), e.getCause(), w.start());
+                break;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        record(result, w.index(), csv, results, resultsFile);
+    }
+
+    private void record(BatchResult result, int index, ResultsCsv csv, List<BatchResult> results, Path resultsFile)
+            throws IOException {
+        results.add(result);
+        try {
+            csv.append(result);
+        } catch (IOException e) {
+            throw new IOException("cannot write " + resultsFile + ": " + IoMessages.reason(e), e);
+        }
+        quietly(() -> listener.rowFinished(result, index));
+    }
+
+    /** A row's failure as its result line. */
+    private static BatchResult failed(BatchRow row, Throwable e, long start) {
+        if (e instanceof OutOfMemoryError) {
+            return BatchResult.error(row, prefixed(row, "out of memory (" + e.getMessage()
+                    + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)"), seconds(start));
+        }
+        if (e instanceof IOException io) {
+            return BatchResult.error(row, prefixed(row, IoMessages.reason(io)), seconds(start));
+        }
+        if (e instanceof RuntimeException) {
+            return BatchResult.error(row, prefixed(row, message(e)), seconds(start));
+        }
+        if (e instanceof Error err) {
+            throw err;
+        }
+        return BatchResult.error(row, prefixed(row, message(e)), seconds(start));
     }
 
     private static ResultsCsv create(Path file) throws IOException {
@@ -147,20 +224,30 @@ public final class BatchRun {
         }
     }
 
-    /** Renders one row and puts its files in place as one set; after a failure none of its new files is there. */
-    private List<Path> renderOne(BatchRow row) throws IOException {
-        String prefix = outDir.resolve(row.id()).toString();
-        if (row.photo() != null) {
-            BatchPhoto photo = row.photo();
-            return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, Double.NaN,
-                    row.request(), null, prefix), PhotoJob.Log.NONE).files();
-        }
-        // Opened before rendering: an unwritable destination is found first; close() discards an uncommitted set.
-        try (OutputSet set = OutputSet.open(prefix)) {
+    /** Orients and renders a photo row and puts its files in place (see {@link PhotoJob}). */
+    private List<Path> renderPhoto(BatchRow row) throws IOException {
+        BatchPhoto photo = row.photo();
+        return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, Double.NaN,
+                row.request(), null, outDir.resolve(row.id()).toString()), PhotoJob.Log.NONE).files();
+    }
+
+    /** Renders a panorama row into a set opened first (an unwritable destination is found before rendering). */
+    private Rendered render(BatchRow row) throws IOException {
+        OutputSet set = OutputSet.open(outDir.resolve(row.id()).toString());
+        try {
             set.checkTargets(PanoramaWriter.suffixes(row.request().colour(), row.request().distance(),
                     row.request().layers(), writing));
-            Panorama p = renderer.render(row.request());
-            List<Path> files = PanoramaWriter.stage(set, p, writing);
+            return new Rendered(set, renderer.render(row.request()));
+        } catch (IOException | RuntimeException | Error e) {
+            set.close(); // discards the uncommitted set
+            throw e;
+        }
+    }
+
+    /** Writes a rendered row's files and puts them in place as one set; after a failure none of its new files is there. */
+    private List<Path> write(Rendered r) throws IOException {
+        try (OutputSet set = r.set()) {
+            List<Path> files = PanoramaWriter.stage(set, r.panorama(), writing);
             set.commit();
             return files;
         }
