@@ -73,7 +73,8 @@ public final class BatchRun {
      * Renders the rows in order, writing {@code results.csv} line by line. A panorama row's files are written on a
      * second thread while the next row renders (at most one row is being written, so at most two panoramas are in
      * memory); its line goes to {@code results.csv}, and {@link BatchListener#rowFinished} is told, once its files are
-     * in place, before the next row's. Its seconds run from its start to its files being in place.
+     * in place, before the next row's. Its seconds are those of its own work: rendering, then writing (not the time
+     * its writing waited for, or overlapped, the next row's rendering).
      *
      * @return the summary; {@link BatchSummary#fatal()} is set when the renderer failed and the rest was skipped
      * @throws IOException when {@code results.csv} cannot be created or written (the output folder is
@@ -119,14 +120,18 @@ public final class BatchRun {
                             Rendered rendered = render(row);
                             // The row before must be in place (and recorded) before this one is written.
                             finish(pending, csv, results, resultsFile);
-                            pending = new Writing(row, index, start, writer.submit(() -> write(rendered)));
+                            double renderSeconds = seconds(start);
+                            pending = new Writing(row, index, renderSeconds, writer.submit(() -> {
+                                long began = System.nanoTime();
+                                return new Written(write(rendered), seconds(began));
+                            }));
                             continue;
                         }
                     } catch (RenderFailedException | GlUnavailableException e) {
                         fatal = message(e);
                         result = BatchResult.error(row, prefixed(row, fatal), seconds(start));
                     } catch (IOException | RuntimeException | OutOfMemoryError e) {
-                        result = failed(row, e, start);
+                        result = failed(row, e, seconds(start));
                     }
                 }
                 finish(pending, csv, results, resultsFile);
@@ -155,8 +160,12 @@ public final class BatchRun {
         return summary;
     }
 
-    /** A panorama row being written on the writer thread. */
-    private record Writing(BatchRow row, int index, long start, java.util.concurrent.Future<List<Path>> files) {
+    /** A panorama row being written on the writer thread, after {@code renderSeconds} of rendering. */
+    private record Writing(BatchRow row, int index, double renderSeconds, java.util.concurrent.Future<Written> files) {
+    }
+
+    /** A row's files in place, and the seconds their writing took. */
+    private record Written(List<Path> files, double seconds) {
     }
 
     /** A rendered panorama and its set, opened before rendering. */
@@ -172,12 +181,13 @@ public final class BatchRun {
         boolean interrupted = false;
         while (true) {
             try {
-                result = BatchResult.ok(w.row(), w.files().get(), seconds(w.start()));
+                Written written = w.files().get();
+                result = BatchResult.ok(w.row(), written.files(), w.renderSeconds() + written.seconds());
                 break;
             } catch (InterruptedException e) {
                 interrupted = true; // the files are being written: wait for them all the same
             } catch (java.util.concurrent.ExecutionException e) {
-                result = failed(w.row(), e.getCause(), w.start());
+                result = failed(w.row(), e.getCause(), w.renderSeconds()); // its writing's seconds are not known
                 break;
             }
         }
@@ -199,21 +209,21 @@ public final class BatchRun {
     }
 
     /** A row's failure as its result line. */
-    private static BatchResult failed(BatchRow row, Throwable e, long start) {
+    private static BatchResult failed(BatchRow row, Throwable e, double seconds) {
         if (e instanceof OutOfMemoryError) {
             return BatchResult.error(row, prefixed(row, "out of memory (" + e.getMessage()
-                    + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)"), seconds(start));
+                    + "): lower ppd or range, or give Java more memory (DEMPANO_OPTS=-Xmx…)"), seconds);
         }
         if (e instanceof IOException io) {
-            return BatchResult.error(row, prefixed(row, IoMessages.reason(io)), seconds(start));
+            return BatchResult.error(row, prefixed(row, IoMessages.reason(io)), seconds);
         }
         if (e instanceof RuntimeException) {
-            return BatchResult.error(row, prefixed(row, message(e)), seconds(start));
+            return BatchResult.error(row, prefixed(row, message(e)), seconds);
         }
         if (e instanceof Error err) {
             throw err;
         }
-        return BatchResult.error(row, prefixed(row, message(e)), seconds(start));
+        return BatchResult.error(row, prefixed(row, message(e)), seconds);
     }
 
     private static ResultsCsv create(Path file) throws IOException {
