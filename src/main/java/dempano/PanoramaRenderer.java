@@ -97,6 +97,16 @@ public final class PanoramaRenderer implements AutoCloseable {
     }
 
     /**
+     * Keeps the patch deviations this renderer measures in a store on disk, and takes those measured by earlier
+     * processes from it ({@link DeviationStore}: served only for the same heights). Call before rendering; null for
+     * none (the default). Returns this renderer.
+     */
+    public PanoramaRenderer withDeviationStore(dempano.terrain.DeviationStore store) {
+        deviations.useDisk(store);
+        return this;
+    }
+
+    /**
      * Opens a renderer that needs no OpenGL: the exact CPU reference
      * ({@link dempano.reference.ReferenceRenderer}). Same requests and outputs; the depth mode,
      * views and supersampling do not apply. Slower than a GPU, exact to micrometres.

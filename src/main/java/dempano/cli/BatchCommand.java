@@ -1,5 +1,6 @@
 package dempano.cli;
 
+import dempano.terrain.DeviationStore;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.batch.BatchListener;
@@ -103,7 +104,8 @@ public final class BatchCommand implements Callable<Integer> {
         javax.imageio.ImageIO.setUseCache(false);
         BatchSummary summary;
         java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
+                : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
             BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(panorama.pfm, null,
                     dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
             Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");

@@ -1,5 +1,6 @@
 package dempano.cli;
 
+import dempano.terrain.DeviationStore;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.dem.DemException;
@@ -214,7 +215,8 @@ public final class Main implements Callable<Integer> {
             java.util.List<String> table = new java.util.ArrayList<>();
             // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
             // name is printed when the views are drawn (asking for it sooner would wait for the context).
-            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
+            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
+                : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
                 boolean[] named = {false};
                 if (reference) {
                     System.err.println("  renderer: " + r.glRenderer());

@@ -1,5 +1,6 @@
 package dempano.cli;
 
+import dempano.terrain.DeviationStore;
 import dempano.CameraImage;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
@@ -96,7 +97,8 @@ public final class PhotoCommand implements Callable<Integer> {
                 headingRangeDeg == null ? Double.NaN : headingRangeDeg, settings, summits, out);
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(demDirs, fill, w -> System.err.println("  warning: " + w));
         PhotoJob.Result done;
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.openInBackground(dem)) {
+        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
+                : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
             done = PhotoJob.run(r, input, new PhotoJob.Log() {
                 @Override
                 public void progress(String line) {

@@ -64,6 +64,21 @@ public final class DeviationCache {
         }
     }
 
+    private volatile DeviationStore disk;
+
+    /**
+     * Also keeps the deviations in (and takes them from) a store on disk, from one process to the next
+     * ({@link DeviationStore}: content-addressed, so this cache's one-source rule does not bind it); null for none.
+     */
+    public void useDisk(DeviationStore store) {
+        this.disk = store;
+    }
+
+    /** The store on disk, or null. */
+    public DeviationStore disk() {
+        return disk;
+    }
+
     /** Patches held. */
     public int size() {
         synchronized (map) {

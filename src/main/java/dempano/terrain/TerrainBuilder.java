@@ -298,10 +298,22 @@ public final class TerrainBuilder {
                 w.fromCache = true;
             });
         }
+        DeviationStore disk = cache == null ? null : cache.disk();
         dempano.util.Parallel.forEachIndex(inRange.size(), i -> { // measured or cached: costs differ per patch
             PatchWork w = inRange.get(i);
             if (w.rawDeviations == null) {
-                w.rawDeviations = measureDeviations(mosaic, w.row0, w.col0);
+                float[] heights = patchHeights(mosaic, w.row0, w.col0);
+                if (disk != null && w.cacheable) {
+                    long hashA = DeviationStore.hashA(heights), hashB = DeviationStore.hashB(heights);
+                    float[] kept = disk.get(w.cacheKey, hashA, hashB);
+                    if (kept == null) {
+                        kept = deviationsOf(heights);
+                        disk.put(w.cacheKey, hashA, hashB, kept);
+                    }
+                    w.rawDeviations = kept;
+                } else {
+                    w.rawDeviations = deviationsOf(heights);
+                }
             }
             w.deviations = new double[LEVELS];
             // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
@@ -314,6 +326,9 @@ public final class TerrainBuilder {
                     eye.eyeAltitudeMetres(), refraction.coefficient());
             w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
         });
+        if (disk != null) {
+            disk.flush();
+        }
         if (cache != null) {
             cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
                     w -> w.rawDeviations);
@@ -535,7 +550,11 @@ public final class TerrainBuilder {
      * lowest and highest sample (metres), then the least and greatest rise from a sample to its east
      * neighbour and to its south neighbour (metres, rounded outwards): {@link #LEVELS} + 6 values.
      */
-    private static float[] measureDeviations(Mosaic mosaic, int row0, int col0) {
+    /**
+     * The drawn heights of a patch, (PATCH_INTERVALS + 1)² row by row, NaN as 0: all the measurement reads. In a
+     * per-thread array, overwritten by the thread's next call.
+     */
+    private static float[] patchHeights(Mosaic mosaic, int row0, int col0) {
         int p = PATCH_INTERVALS;
         float[] heights = PATCH_HEIGHTS.get(); // reused: tens of thousands of patches per build
         if (row0 >= 0 && col0 >= 0 && row0 + p < mosaic.rows() && col0 + p < mosaic.cols()) {
@@ -555,6 +574,12 @@ public final class TerrainBuilder {
                 }
             }
         }
+        return heights;
+    }
+
+    /** {@link DeviationCache}'s values of a patch from its heights ({@link #patchHeights}). */
+    private static float[] deviationsOf(float[] heights) {
+        int p = PATCH_INTERVALS;
         double[] dev = LevelOfDetail.deviationsMetres(heights, p + 1, 0, 0, p);
         float[] raw = new float[LEVELS + 6];
         for (int l = 0; l < LEVELS; l++) {
