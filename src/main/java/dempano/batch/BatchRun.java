@@ -103,7 +103,8 @@ public final class BatchRun {
                 int index = i;
                 quietly(() -> listener.rowStarted(row, index));
                 long start = System.nanoTime();
-                BatchResult result;
+                BatchResult result = null;
+                Rendered rendered = null;
                 String idProblem = BatchIds.problem(row.id());
                 String first = idProblem == null ? seen.putIfAbsent(BatchIds.collisionKey(row.id()), row.where()) : null;
                 if (!row.valid()) {
@@ -117,15 +118,7 @@ public final class BatchRun {
                         if (row.photo() != null) {
                             result = BatchResult.ok(row, renderPhoto(row), seconds(start));
                         } else {
-                            Rendered rendered = render(row);
-                            // The row before must be in place (and recorded) before this one is written.
-                            finish(pending, csv, results, resultsFile);
-                            double renderSeconds = seconds(start);
-                            pending = new Writing(row, index, renderSeconds, writer.submit(() -> {
-                                long began = System.nanoTime();
-                                return new Written(write(rendered), seconds(began));
-                            }));
-                            continue;
+                            rendered = render(row);
                         }
                     } catch (RenderFailedException | GlUnavailableException e) {
                         fatal = message(e);
@@ -134,8 +127,26 @@ public final class BatchRun {
                         result = failed(row, e, seconds(start));
                     }
                 }
-                finish(pending, csv, results, resultsFile);
+                double renderSeconds = seconds(start);
+                // The row before must be in place, and recorded, before this one is recorded or written.
+                Writing before = pending;
                 pending = null;
+                try {
+                    finish(before, csv, results, resultsFile);
+                } catch (IOException | RuntimeException | Error e) {
+                    if (rendered != null) {
+                        discard(rendered, e); // results.csv cannot be written: this row is not written either
+                    }
+                    throw e;
+                }
+                if (rendered != null) {
+                    Rendered toWrite = rendered;
+                    pending = new Writing(row, index, renderSeconds, writer.submit(() -> {
+                        long began = System.nanoTime();
+                        return new Written(write(toWrite), seconds(began));
+                    }));
+                    continue;
+                }
                 record(result, index, csv, results, resultsFile);
                 if (fatal != null) {
                     break;
@@ -251,6 +262,15 @@ public final class BatchRun {
         } catch (IOException | RuntimeException | Error e) {
             set.close(); // discards the uncommitted set
             throw e;
+        }
+    }
+
+    /** Closes (discards) a rendered row's uncommitted set, a failure to do so added to {@code cause}. */
+    private static void discard(Rendered r, Throwable cause) {
+        try {
+            r.set().close();
+        } catch (RuntimeException e) {
+            cause.addSuppressed(e);
         }
     }
 
