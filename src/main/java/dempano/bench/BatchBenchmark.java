@@ -100,7 +100,8 @@ public final class BatchBenchmark implements Callable<Integer> {
         }
         deleteTree(tmp);
         System.out.printf(Locale.ROOT, "%d viewpoints about 3 km apart around %.4f, %.4f; %s; PNG + distance written; "
-                + "%d alternating rounds, median of rounds%n%n", viewpoints, latDeg, lonDeg, settings, rounds);
+                + "%d alternating rounds, median of rounds; patch deviations kept on disk in the run's own folder, "
+                + "filled by its first process%n%n", viewpoints, latDeg, lonDeg, settings, rounds);
         System.out.println("| way | seconds per panorama |");
         System.out.println("|---|---:|");
         System.out.printf(Locale.ROOT, "| one process per panorama (installed start script), mean | %.2f |%n", median(singleMean));
@@ -114,7 +115,11 @@ public final class BatchBenchmark implements Callable<Integer> {
     /** Runs a command to its end (output discarded), seconds of wall-clock time; fails on a non-zero exit. */
     private static double run(List<String> cmd, Path dir) throws IOException, InterruptedException {
         long t = System.nanoTime();
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log.txt").toFile()).start();
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log.txt").toFile());
+        // The patch deviations every process keeps on disk (DeviationStore) in this run's own folder, filled by its first
+        // process: the figures do not depend on what the user's cache held before.
+        pb.environment().put("DEMPANO_CACHE_DIR", dir.resolve("cache").toString());
+        Process p = pb.start();
         if (!p.waitFor(30, TimeUnit.MINUTES) || p.exitValue() != 0) {
             throw new IOException(String.join(" ", cmd) + " failed: " + Files.readString(dir.resolve("log.txt")));
         }
