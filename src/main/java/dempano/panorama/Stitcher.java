@@ -225,9 +225,10 @@ public final class Stitcher {
         // viewpoints (interleaved stripes split four ways by the stream: 1.57 cores busy at Mount Washington's
         // summit); taken a row at a time, the cores finish within a row of each other. The output does not depend
         // on which worker takes which row.
+        Rows shared = new Rows(target.widthPx(), layout, captures, inverseEyeDepth, seen, exact == null ? null : exact.probe(),
+                sampling, topTerrainRow, argbOut, rangeOut);
         dempano.util.Parallel.forEachWorker(height, nextRow -> {
-            RowStitcher rows = new RowStitcher(target.widthPx(), layout, captures, inverseEyeDepth, exact, sampling,
-                    topTerrainRow, argbOut, rangeOut);
+            RowStitcher rows = new RowStitcher(shared);
             for (int row = nextRow.getAsInt(); row < height; row = nextRow.getAsInt()) {
                 rows.stitch(row);
             }
@@ -244,6 +245,16 @@ public final class Stitcher {
      * small methods once instead of recompiling the whole walk on-stack at each loop (measured: six server
      * compilations of the lambda, 0.8–1.4 s of compiler time, in the first four renders of a JVM).
      */
+    /**
+     * What every worker of one stitch reads (and the outputs they fill, a row each): {@code seen} and {@code probe}
+     * null without exact distances, {@code inverseEyeDepth} null for the nearest raw range (colour only), {@code
+     * argbOut} null for no colour.
+     */
+    private record Rows(int width, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth,
+                        SeenTriangles seen, RayProbe probe, ViewSampling sampling, int[][] topTerrainRow, int[] argbOut,
+                        float[] rangeOut) {
+    }
+
     private static final class RowStitcher {
         final int width;
         final ViewLayout layout;
@@ -260,18 +271,18 @@ public final class Stitcher {
         final ExactHint hint = new ExactHint();
         long exactPixels, probedPixels, fallbackPixels;
 
-        RowStitcher(int width, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth, Exact exact,
-                    ViewSampling sampling, int[][] topTerrainRow, int[] argbOut, float[] rangeOut) {
-            this.width = width;
-            this.layout = layout;
-            this.captures = captures;
-            this.inverseEyeDepth = inverseEyeDepth;
-            this.seen = exact == null ? null : exact.seen();
-            this.probe = exact == null ? null : exact.probe();
-            this.sampling = sampling;
-            this.topTerrainRow = topTerrainRow;
-            this.argbOut = argbOut;
-            this.rangeOut = rangeOut;
+        // The shared inputs copied into final fields of the worker's own object: read per pixel, kept close.
+        RowStitcher(Rows r) {
+            this.width = r.width();
+            this.layout = r.layout();
+            this.captures = r.captures();
+            this.inverseEyeDepth = r.inverseEyeDepth();
+            this.seen = r.seen();
+            this.probe = r.probe();
+            this.sampling = r.sampling();
+            this.topTerrainRow = r.topTerrainRow();
+            this.argbOut = r.argbOut();
+            this.rangeOut = r.rangeOut();
         }
 
         void stitch(int row) {

@@ -835,21 +835,21 @@ public final class TerrainBuilder {
             int n = cs * cs + skirted * cs;
             float[] high = new float[n * 3], low = new float[n * 3];
             float[] up = new float[n * 4], normals = new float[n * 3], elevations = new float[n * 4];
-            double[] foot = new double[3];
-            placeGrid(w, step, cs, high, low, up, elevations);
-            gridNormals(cs, high, low, up, normals);
             int cellTriangles = (cs - 1) * (cs - 1), triangles = cellTriangles * 2 + skirted * 2 * (cs - 1);
-            int[] indices = new int[triangles * 3];
-            int at = cellIndices(w, step, cs, indices);
+            // The arrays being filled (the hull comes last, from them).
+            PatchMesh m = new PatchMesh(high, low, up, normals, elevations, new int[triangles * 3], null);
+            placeGrid(w, step, cs, m);
+            gridNormals(cs, m);
+            int at = cellIndices(w, step, cs, m.indices());
             // Each skirted edge's vertices get twins lowered along the ellipsoid normal.
             int twin = cs * cs;
             for (int e = 0; e < 4; e++) {
                 if (skirtsMetres[e] > 0) {
-                    at = skirt(w, step, cs, e, skirtsMetres[e], twin, foot, high, low, up, normals, elevations, indices, at);
+                    at = skirt(w, e, skirtsMetres[e], twin, m, at);
                     twin += cs;
                 }
             }
-            return new PatchMesh(high, low, up, normals, elevations, indices, hull(cs, n, high, low, up));
+            return new PatchMesh(high, low, up, normals, elevations, m.indices(), hull(cs, m));
         }
 
         // The phases of mesh, each a method of its own: the JIT then compiles small methods once, instead of
@@ -857,7 +857,8 @@ public final class TerrainBuilder {
         // time in a JVM's first four renders).
 
         /** Every step-th sample of the patch: positions, heights, flags and grid positions (see VERTEX_BASE). */
-        private void placeGrid(PatchWork w, int step, int cs, float[] high, float[] low, float[] up, float[] elevations) {
+        private void placeGrid(PatchWork w, int step, int cs, PatchMesh m) {
+            float[] high = m.high(), low = m.low(), up = m.up(), elevations = m.texCoords();
             double[] foot = new double[3];
             for (int gi = 0; gi < cs; gi++) {
                 int r = clampRow(mosaic, w.row0 + gi * step);
@@ -879,7 +880,8 @@ public final class TerrainBuilder {
         }
 
         /** Normals (ECEF) from the exact positions: central differences over the drawn grid. */
-        private static void gridNormals(int cs, float[] high, float[] low, float[] up, float[] normals) {
+        private static void gridNormals(int cs, PatchMesh m) {
+            float[] high = m.high(), low = m.low(), up = m.up(), normals = m.normals();
             for (int k = 0; k < cs * cs; k++) {
                 int gi = k / cs, gj = k % cs;
                 int north = gi > 0 ? k - cs : k, south = gi < cs - 1 ? k + cs : k;
@@ -933,8 +935,11 @@ public final class TerrainBuilder {
          * Edge e's skirt (see mesh): twins of its vertices from {@code twin} on, lowered {@code depthMetres},
          * and its triangles from index {@code at}; returns the next free index.
          */
-        private int skirt(PatchWork w, int step, int cs, int e, double depthMetres, int twin, double[] foot, float[] high,
-                          float[] low, float[] up, float[] normals, float[] elevations, int[] indices, int at) {
+        private int skirt(PatchWork w, int e, double depthMetres, int twin, PatchMesh m, int at) {
+            int step = 1 << w.level, cs = PATCH_INTERVALS / step + 1;
+            float[] high = m.high(), low = m.low(), up = m.up(), normals = m.normals(), elevations = m.texCoords();
+            int[] indices = m.indices();
+            double[] foot = new double[3];
             for (int t = 0; t < cs; t++) {
                 int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                 int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
@@ -965,7 +970,9 @@ public final class TerrainBuilder {
          * The prism over the patch's corner feet from its lowest to its highest vertex bounds it (up to the
          * earth's curvature between corners, which the bounds' margin covers): 8 ECEF points.
          */
-        private static double[] hull(int cs, int n, float[] high, float[] low, float[] up) {
+        private static double[] hull(int cs, PatchMesh m) {
+            float[] high = m.high(), low = m.low(), up = m.up();
+            int n = m.vertexCount();
             float lowest = Float.POSITIVE_INFINITY, highest = Float.NEGATIVE_INFINITY;
             for (int k = 0; k < n; k++) {
                 lowest = Math.min(lowest, up[4 * k + 3]);
