@@ -2,6 +2,7 @@ package dempano.panorama;
 
 import dempano.camera.PanoramaTarget;
 import dempano.camera.TargetImage;
+import dempano.util.Floors;
 import java.util.stream.IntStream;
 
 /**
@@ -298,7 +299,7 @@ public final class Stitcher {
                     continue;
                 }
                 // With exact distances: all 4×4 samples around are sky (the top terrain rows say so cheaply).
-                boolean sky = seen != null && skyAround(topTerrainRow[view], (int) Math.floor(p[0]), (int) Math.floor(p[1]));
+                boolean sky = seen != null && skyAround(topTerrainRow[view], Floors.floorInt(p[0]), Floors.floorInt(p[1]));
                 if (argbOut != null) {
                     // Sky all around: the four samples hold the one clear colour, which the blend gives back exactly.
                     argbOut[i] = sky ? texel(captures[view].rgba(), layout, p[0], p[1])
@@ -391,7 +392,7 @@ public final class Stitcher {
      * @return false where one of the central samples is sky or beyond the view's edge
      */
     static boolean centralSpan(InverseDepths inv, int view, ViewLayout l, double[] p, double[] out) {
-        int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
+        int x0 = Floors.floorInt(p[0]), y0 = Floors.floorInt(p[1]);
         if (x0 < 0 || y0 < 0 || x0 + 1 >= l.widthPx() || y0 + 1 >= l.heightPx()) {
             return false;
         }
@@ -422,7 +423,7 @@ public final class Stitcher {
      * of the nearest of the 4×4 view samples around it, metres (0 when none saw terrain).
      */
     static double nearestSeenMetres(InverseDepths inv, int view, ViewLayout l, double[] p) {
-        int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
+        int x0 = Floors.floorInt(p[0]), y0 = Floors.floorInt(p[1]);
         float nearest = 0; // the largest inverse eye depth
         for (int y = Math.max(0, y0 - 1), ye = Math.min(l.heightPx() - 1, y0 + 2); y <= ye; y++) {
             for (int x = Math.max(0, x0 - 1), xe = Math.min(l.widthPx() - 1, x0 + 2); x <= xe; x++) {
@@ -497,7 +498,7 @@ public final class Stitcher {
     static double exactRange(SeenTriangles seen, int[] tri, ViewLayout l, double[] p, double[] ray, ExactHint hint) {
         double px = p[0], py = p[1], dx = ray[0], dy = ray[1], dz = ray[2];
         int[] candidates = hint.candidates;
-        int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
+        int x0 = Floors.floorInt(px), y0 = Floors.floorInt(py);
         int w = l.widthPx(), h = l.heightPx();
         // Fast path, most pixels: the central 2×2 samples saw one triangle. The pixel's ray lies
         // between their rays, so it meets that (convex, planar) triangle too.
@@ -582,12 +583,12 @@ public final class Stitcher {
 
     /** The colour of the sample at the floor of (px, py), clamped into the view, as {@link #bilinearColour} packs it. */
     static int texel(byte[] rgba, ViewLayout l, double px, double py) {
-        int o = (clampY(l, (int) Math.floor(py)) * l.widthPx() + clampX(l, (int) Math.floor(px))) * 4;
+        int o = (clampY(l, Floors.floorInt(py)) * l.widthPx() + clampX(l, Floors.floorInt(px))) * 4;
         return 0xff000000 | (rgba[o] & 0xff) << 16 | (rgba[o + 1] & 0xff) << 8 | rgba[o + 2] & 0xff;
     }
 
     static int bilinearColour(byte[] rgba, ViewLayout l, double px, double py) {
-        int x0 = (int) Math.floor(px), y0 = (int) Math.floor(py);
+        int x0 = Floors.floorInt(px), y0 = Floors.floorInt(py);
         double fx = px - x0, fy = py - y0;
         int viewWidth = l.widthPx();
         if (x0 >= 0 && y0 >= 0 && x0 + 1 < viewWidth && y0 + 1 < l.heightPx()) {
@@ -635,7 +636,7 @@ public final class Stitcher {
      * @param w a 4×4 scratch buffer, overwritten
      */
     static double range(float[] inv, ViewLayout l, double[] p, double[][] w) {
-        int x0 = (int) Math.floor(p[0]), y0 = (int) Math.floor(p[1]);
+        int x0 = Floors.floorInt(p[0]), y0 = Floors.floorInt(p[1]);
         double fx = p[0] - x0, fy = p[1] - y0;
         // Fast path, most pixels: the central 2×2 are one smooth surface, or all sky.
         {

@@ -8,6 +8,7 @@ import dempano.geo.Viewpoint;
 import dempano.panorama.RayProbe;
 import dempano.terrain.LevelOfDetail;
 import dempano.terrain.Triangulation;
+import dempano.util.Floors;
 
 /**
  * A ray's first crossing with the full-resolution triangulated surface (the surface the CPU
@@ -215,8 +216,8 @@ public final class TerrainRayProbe implements RayProbe {
         double rowA = scratch[ROW], colA = scratch[COL];
         clearance(e, n, u, to, scratch);
         double rowB = scratch[ROW], colB = scratch[COL];
-        int r0 = (int) Math.floor(Math.min(rowA, rowB) - 0.05), r1 = (int) Math.floor(Math.max(rowA, rowB) + 0.05);
-        int c0 = (int) Math.floor(Math.min(colA, colB) - 0.05), c1 = (int) Math.floor(Math.max(colA, colB) + 0.05);
+        int r0 = Floors.floorInt(Math.min(rowA, rowB) - 0.05), r1 = Floors.floorInt(Math.max(rowA, rowB) + 0.05);
+        int c0 = Floors.floorInt(Math.min(colA, colB) - 0.05), c1 = Floors.floorInt(Math.max(colA, colB) + 0.05);
         // The cells along the path (a straight line in rows and columns), with their neighbours across an edge the
         // path runs along, nearest first.
         int samples = (int) Math.ceil(4 * (Math.abs(rowB - rowA) + Math.abs(colB - colA))) + 2;
@@ -238,8 +239,8 @@ public final class TerrainRayProbe implements RayProbe {
             if (from + f * (to - from) > best + beyond) {
                 break;
             }
-            int rowLo = (int) Math.floor(row - 0.05), rowHi = (int) Math.floor(row + 0.05);
-            int colLo = (int) Math.floor(col - 0.05), colHi = (int) Math.floor(col + 0.05);
+            int rowLo = Floors.floorInt(row - 0.05), rowHi = Floors.floorInt(row + 0.05);
+            int colLo = Floors.floorInt(col - 0.05), colHi = Floors.floorInt(col + 0.05);
             if (rowLo == lastRowLo && rowHi == lastRowHi && colLo == lastColLo && colHi == lastColHi) {
                 continue; // the sample before lay on the same cells (a cell holds about four samples): all visited
             }
@@ -460,8 +461,8 @@ public final class TerrainRayProbe implements RayProbe {
         double margin = PATH_MARGIN_CELLS + (reach / ANCHOR_SPAN_METRES) * (reach / ANCHOR_SPAN_METRES);
         double row0 = anchor[ROW] + anchor[ROW_RATE] * (t0 - anchorT), row1 = anchor[ROW] + anchor[ROW_RATE] * (t1 - anchorT);
         double col0 = anchor[COL] + anchor[COL_RATE] * (t0 - anchorT), col1 = anchor[COL] + anchor[COL_RATE] * (t1 - anchorT);
-        int r0 = (int) Math.floor(Math.min(row0, row1) - margin), r1 = (int) Math.floor(Math.max(row0, row1) + margin) + 1;
-        int c0 = (int) Math.floor(Math.min(col0, col1) - margin), c1 = (int) Math.floor(Math.max(col0, col1) + margin) + 1;
+        int r0 = Floors.floorInt(Math.min(row0, row1) - margin), r1 = Floors.floorInt(Math.max(row0, row1) + margin) + 1;
+        int c0 = Floors.floorInt(Math.min(col0, col1) - margin), c1 = Floors.floorInt(Math.max(col0, col1) + margin) + 1;
         if (r0 < 0 || c0 < 0 || r1 >= mosaic.rows() || c1 >= mosaic.cols()) {
             return false; // may leave the mosaic: decided by computing the ray
         }
@@ -496,10 +497,10 @@ public final class TerrainRayProbe implements RayProbe {
         double row0 = anchor[ROW] + rowRate * (t0 - anchorT), col0 = anchor[COL] + colRate * (t0 - anchorT);
         double row1 = anchor[ROW] + rowRate * (t1 - anchorT), col1 = anchor[COL] + colRate * (t1 - anchorT);
         int count = 0;
-        for (int k = (int) Math.floor(Math.min(row0, row1)) + 1; k <= Math.max(row0, row1) && count < out.length / 2; k++) {
+        for (int k = Floors.floorInt(Math.min(row0, row1)) + 1; k <= Math.max(row0, row1) && count < out.length / 2; k++) {
             out[count++] = t0 + (k - row0) / rowRate;
         }
-        for (int k = (int) Math.floor(Math.min(col0, col1)) + 1; k <= Math.max(col0, col1) && count < out.length / 2; k++) {
+        for (int k = Floors.floorInt(Math.min(col0, col1)) + 1; k <= Math.max(col0, col1) && count < out.length / 2; k++) {
             out[count++] = t0 + (k - col0) / colRate;
         }
         java.util.Arrays.sort(out, 0, count);
@@ -509,7 +510,7 @@ public final class TerrainRayProbe implements RayProbe {
             double ta = i == 0 ? t0 : out[i - 1], tb = i < pieces - 1 ? out[i] : t1;
             double tm = 0.5 * (ta + tb);
             double rm = row0 + rowRate * (tm - t0), cm = col0 + colRate * (tm - t0);
-            int r = (int) Math.floor(rm), c = (int) Math.floor(cm);
+            int r = Floors.floorInt(rm), c = Floors.floorInt(cm);
             double td;
             if (Triangulation.splitsNorthWestToSouthEast(r, c)) { // v = w: row − col = r − c
                 td = t0 + ((r - c) - (row0 - col0)) / (rowRate - colRate);
@@ -664,7 +665,7 @@ public final class TerrainRayProbe implements RayProbe {
         point[GROUND] = groundDistanceMetres;
         point[ROW] = row;
         point[COL] = col;
-        int r = (int) Math.floor(row), c = (int) Math.floor(col);
+        int r = Floors.floorInt(row), c = Floors.floorInt(col);
         if (r < 0 || c < 0 || r + 1 >= mosaic.rows() || c + 1 >= mosaic.cols()) {
             return Double.NaN;
         }
