@@ -6,6 +6,7 @@ import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
+import dempano.util.Floors;
 import java.util.Locale;
 
 /**
@@ -34,11 +35,11 @@ public final class DistanceImage {
         }
         double t = (Math.log(Math.max(minM, Math.min(maxM, metres))) - logMin) * perLog;
         double x = t * (STOPS.length - 1);
-        int i = Math.min(STOPS.length - 2, (int) Math.floor(x));
+        int i = Math.min(STOPS.length - 2, Floors.floorInt(x));
         double f = x - i;
-        int r = (int) Math.round(255 * (STOPS[i][0] + f * (STOPS[i + 1][0] - STOPS[i][0])));
-        int g = (int) Math.round(255 * (STOPS[i][1] + f * (STOPS[i + 1][1] - STOPS[i][1])));
-        int b = (int) Math.round(255 * (STOPS[i][2] + f * (STOPS[i + 1][2] - STOPS[i][2])));
+        int r = Floors.roundNonNegative(255 * (STOPS[i][0] + f * (STOPS[i + 1][0] - STOPS[i][0])));
+        int g = Floors.roundNonNegative(255 * (STOPS[i][1] + f * (STOPS[i + 1][1] - STOPS[i][1])));
+        int b = Floors.roundNonNegative(255 * (STOPS[i][2] + f * (STOPS[i + 1][2] - STOPS[i][2])));
         return (r << 16) | (g << 8) | b;
     }
 
