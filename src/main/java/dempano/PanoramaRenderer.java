@@ -55,6 +55,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     /** Fine patches' geometries with their GL buffers, kept across renders; one render uses it at a time. */
     private final MeshCache meshes = new MeshCache();
     private final java.util.concurrent.locks.ReentrantLock meshLock = new java.util.concurrent.locks.ReentrantLock();
+    /** False after {@link #withoutMeshCache}. */
+    private volatile boolean keepMeshes = true;
 
     private PanoramaRenderer(DemSource dem, java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> handle) {
         this.dem = dem;
@@ -103,6 +105,18 @@ public final class PanoramaRenderer implements AutoCloseable {
      */
     public PanoramaRenderer withDeviationStore(dempano.terrain.DeviationStore store) {
         deviations.useDisk(store);
+        return this;
+    }
+
+    /**
+     * Keeps no terrain meshes from render to render: each render's meshes (their Java buffers and GL copies) are
+     * freed once its views are drawn and the triangles seen resolved, before the stitch, instead of being kept for
+     * the next render's patches. For one panorama per process (the CLI's), where nothing would be drawn again:
+     * Mount Washington's peak resident memory falls from about 754 MB, reached during the stitch, to about
+     * 670 MB (docs/cold-start.md). Call before rendering. Returns this renderer.
+     */
+    public PanoramaRenderer withoutMeshCache() {
+        keepMeshes = false;
         return this;
     }
 
@@ -338,7 +352,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         long triangles;
         // The mesh cache's geometries can be in one scene at a time, so it is held from building to
         // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
-        boolean withMeshCache = meshLock.tryLock();
+        boolean withMeshCache = keepMeshes && meshLock.tryLock();
         try {
             // Built without a material: the GL context may still be starting (openInBackground). The material
             // (it needs the context's asset manager) is set on every geometry drawn afterwards.

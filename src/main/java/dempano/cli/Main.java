@@ -107,6 +107,15 @@ public final class Main implements Callable<Integer> {
         return false;
     }
 
+    /**
+     * The OpenGL renderer of a panorama from the shell: patch deviations kept on disk; for one panorama (no
+     * {@code --repeat}) no meshes kept either, so that they are freed before the stitch (nothing would draw them again).
+     */
+    private static PanoramaRenderer openGl(dempano.dem.DemSource dem, int repeat) {
+        PanoramaRenderer r = PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault());
+        return repeat == 1 ? r.withoutMeshCache() : r;
+    }
+
     private static CommandLine commandLine(String... args) {
         CommandLine cl = new CommandLine(new Main());
         if (needsSubcommands(args)) {
@@ -215,8 +224,7 @@ public final class Main implements Callable<Integer> {
             java.util.List<String> table = new java.util.ArrayList<>();
             // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
             // name is printed when the views are drawn (asking for it sooner would wait for the context).
-            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
-                : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
+            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : openGl(dem, repeat)) {
                 boolean[] named = {false};
                 if (reference) {
                     System.err.println("  renderer: " + r.glRenderer());

@@ -9,6 +9,10 @@ import dempano.Synthetic;
 import dempano.dem.InMemoryDem;
 import dempano.panorama.ElevationRange;
 import dempano.panorama.Panorama;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -54,5 +58,48 @@ class MeshReuseRenderTest {
             assertEquals(pair[1].metadata().terrainTriangles(), pair[0].metadata().terrainTriangles());
         }
         assertTrue(reused.metadata().terrainTriangles() > 0);
+    }
+
+    /**
+     * Without the mesh cache (the CLI's one panorama), a render draws no patch kept from the one before, and the
+     * panorama is the same as with it.
+     */
+    @Test
+    void aRendererWithoutMeshCacheKeepsNoPatchAndDrawsTheSame() {
+        InMemoryDem dem = Synthetic.dem(LevelOfDetailRenderTest.RUGGED, 46, 8, 1, 1);
+        PanoramaRequest request = at(46.518, 8.51, 2);
+        List<String> keeping = new ArrayList<>(), notKeeping = new ArrayList<>();
+        Panorama kept, notKept;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            r.render(request);
+            kept = r.render(request, keeping::add);
+        }
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem).withoutMeshCache()) {
+            r.render(request);
+            notKept = r.render(request, notKeeping::add);
+        }
+        assertTrue(reusedPatches(keeping) > 0, "with the cache the second render reuses patches: " + keeping);
+        assertEquals(0, reusedPatches(notKeeping), "without it none: " + notKeeping);
+        float[] a = kept.distanceArray(), b = notKept.distanceArray(); // copies: taken once
+        for (int i = 0; i < a.length; i++) {
+            assertEquals(0, Float.compare(a[i], b[i]), "distance at pixel " + i);
+        }
+        for (int r = 0; r < kept.heightPx(); r++) {
+            for (int c = 0; c < kept.widthPx(); c++) {
+                assertEquals(kept.argb(c, r), notKept.argb(c, r), "colour at " + c + ", " + r);
+            }
+        }
+    }
+
+    /** The patches a render reused, from its progress line ("… N patches reused)"). */
+    static long reusedPatches(List<String> progress) {
+        Pattern p = Pattern.compile("(\\d+) patches reused");
+        for (String line : progress) {
+            Matcher m = p.matcher(line);
+            if (m.find()) {
+                return Long.parseLong(m.group(1));
+            }
+        }
+        throw new AssertionError("no line names the patches reused: " + progress);
     }
 }
