@@ -1,12 +1,12 @@
 package dempano.io;
 
+import dempano.util.Floors;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
-import dempano.util.Floors;
 import java.util.Locale;
 
 /**
