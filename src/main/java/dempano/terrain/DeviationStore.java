@@ -1,17 +1,13 @@
 package dempano.terrain;
 
+import dempano.io.AtomicFiles;
 import java.io.BufferedInputStream;
-import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -195,42 +191,32 @@ public final class DeviationStore {
                 return entries; // trailing bytes: not a file this wrote
             }
             return read;
-        } catch (NoSuchFileException e) {
-            return entries;
         } catch (IOException | RuntimeException e) {
-            return entries; // truncated or corrupt: measured again, rewritten
+            return entries; // missing, truncated or corrupt: measured again, rewritten
         }
     }
 
+    /** Replaces a group file whole ({@link AtomicFiles}: written aside, then renamed). */
     private static void write(Path file, Map<PatchKey, Entry> entries) throws IOException {
         Files.createDirectories(file.getParent());
-        Path part = Files.createTempFile(file.getParent(), file.getFileName().toString(), ".part");
-        try {
-            try (OutputStream out = Files.newOutputStream(part);
-                 DataOutputStream data = new DataOutputStream(new BufferedOutputStream(out))) {
-                data.writeInt(MAGIC);
-                data.writeInt(FORMAT);
-                data.writeInt(TerrainBuilder.PATCH_INTERVALS);
-                data.writeInt(valuesPerEntry());
-                data.writeInt(entries.size());
-                for (Map.Entry<PatchKey, Entry> e : entries.entrySet()) {
-                    data.writeLong(e.getKey().globalRow);
-                    data.writeLong(e.getKey().globalCol);
-                    data.writeLong(e.getValue().hashA);
-                    data.writeLong(e.getValue().hashB);
-                    for (float v : e.getValue().values) {
-                        data.writeFloat(v);
-                    }
+        AtomicFiles.write(file, out -> {
+            DataOutputStream data = new DataOutputStream(out);
+            data.writeInt(MAGIC);
+            data.writeInt(FORMAT);
+            data.writeInt(TerrainBuilder.PATCH_INTERVALS);
+            data.writeInt(valuesPerEntry());
+            data.writeInt(entries.size());
+            for (Map.Entry<PatchKey, Entry> e : entries.entrySet()) {
+                data.writeLong(e.getKey().globalRow);
+                data.writeLong(e.getKey().globalCol);
+                data.writeLong(e.getValue().hashA);
+                data.writeLong(e.getValue().hashB);
+                for (float v : e.getValue().values) {
+                    data.writeFloat(v);
                 }
             }
-            try {
-                Files.move(part, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(part, file, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } finally {
-            Files.deleteIfExists(part);
-        }
+            data.flush();
+        });
     }
 
     private record GroupKey(int intervalsPerDegree, long row, long col) {
