@@ -7,6 +7,7 @@ import com.jme3.scene.mesh.IndexBuffer;
 import dempano.panorama.SeenTriangles;
 import dempano.panorama.ViewCapture;
 import java.nio.FloatBuffer;
+import java.nio.ShortBuffer;
 import java.util.Arrays;
 import java.util.List;
 import java.util.stream.IntStream;
@@ -167,7 +168,9 @@ public final class SeenTriangleResolver {
      * thread-safe once built), and which triangles end on each vertex.
      */
     private static final class Buffers {
-        final FloatBuffer high, low, up, texCoords;
+        final FloatBuffer high, low, up;
+        /** Per vertex: elevation, flags, grid row, grid column (shorts, see TerrainBuilder.PatchMesh.merge). */
+        final ShortBuffer texCoords;
         final IndexBuffer index;
         /** Per vertex, the (at most two) triangles it is the last vertex of, in index order; −1 for none. */
         private final int[] lastOf;
@@ -176,7 +179,7 @@ public final class SeenTriangleResolver {
             high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
             low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
             up = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord3).getData();
-            texCoords = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
+            texCoords = (ShortBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
             index = mesh.getIndexBuffer();
             int triangles = index.size() / 3;
             lastOf = new int[2 * mesh.getVertexCount()];
@@ -215,7 +218,7 @@ public final class SeenTriangleResolver {
          */
         int bitOf(int p) {
             int last = index.get(3 * p + 2);
-            int rule = (int) texCoords.get(4 * last + 1) & TerrainBuilder.NAMED_MASK;
+            int rule = texCoords.get(4 * last + 1) & TerrainBuilder.NAMED_MASK;
             double row = texCoords.get(4 * last + 2), col = texCoords.get(4 * last + 3), f = 0;
             for (int corner = 0; corner < 2; corner++) {
                 int v = index.get(3 * p + corner);

@@ -9,6 +9,7 @@ import com.jme3.scene.VertexBuffer;
 import com.jme3.terrain.geomipmap.TerrainPatch;
 import com.jme3.terrain.geomipmap.TerrainQuad;
 import com.jme3.util.BufferUtils;
+import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.nio.ShortBuffer;
@@ -676,8 +677,9 @@ public final class TerrainBuilder {
     /**
      * A patch's vertex arrays and triangles: positions as ECEF double-single ({@code high} +
      * {@code low}, 3 floats each), ellipsoid normal and height above the ellipsoid ({@code up}, 4),
-     * surface normal (ECEF, 3), texture coordinates (elevation, flags), and 8 ECEF points whose
-     * convex hull holds the patch ({@code hull}, 24 doubles).
+     * surface normal (ECEF, 3), texture coordinates (elevation, flags, grid row and column, 4), and 8 ECEF
+     * points whose convex hull holds the patch ({@code hull}, 24 doubles). {@link #merge} makes the jME mesh,
+     * normals there as signed normalized bytes, texture coordinates as shorts.
      */
     record PatchMesh(float[] high, float[] low, float[] up, float[] normals, float[] texCoords, int[] indices,
                      double[] hull) {
@@ -694,8 +696,12 @@ public final class TerrainBuilder {
                 ni += m.indices.length;
             }
             FloatBuffer pos = BufferUtils.createFloatBuffer(nv * 3), low = BufferUtils.createFloatBuffer(nv * 3);
-            FloatBuffer up = BufferUtils.createFloatBuffer(nv * 4), nor = BufferUtils.createFloatBuffer(nv * 3);
-            FloatBuffer tex = BufferUtils.createFloatBuffer(nv * 4);
+            FloatBuffer up = BufferUtils.createFloatBuffer(nv * 4);
+            // Normals as signed normalized bytes and the texture coordinates (elevation rounded to the metre,
+            // flags, grid row and column: integers) as shorts: 12 bytes a vertex instead of 28, in the Java buffers
+            // and in the driver's copy alike (the normal only shades, within 0.5°; the elevation only tints).
+            ByteBuffer nor = BufferUtils.createByteBuffer(nv * 4);
+            ShortBuffer tex = BufferUtils.createShortBuffer(nv * 4);
             boolean shortIndices = nv <= 65536;
             ShortBuffer si = shortIndices ? BufferUtils.createShortBuffer(ni) : null;
             IntBuffer ii = shortIndices ? null : BufferUtils.createIntBuffer(ni);
@@ -703,8 +709,8 @@ public final class TerrainBuilder {
                 pos.put(m.high);
                 low.put(m.low);
                 up.put(m.up);
-                nor.put(m.normals);
-                tex.put(m.texCoords);
+                putNormals(m.normals, nor);
+                putTexCoords(m.texCoords, tex);
             }
             // The triangles part by part, gathered in a heap array and put in one bulk copy (a put per index cost
             // most of a warm render's mesh stage).
@@ -731,7 +737,10 @@ public final class TerrainBuilder {
             mesh.setBuffer(VertexBuffer.Type.Position, 3, pos.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord2, 3, low.flip());
             mesh.setBuffer(VertexBuffer.Type.TexCoord3, 4, up.flip());
-            mesh.setBuffer(VertexBuffer.Type.Normal, 3, nor.flip());
+            VertexBuffer normals = new VertexBuffer(VertexBuffer.Type.Normal);
+            normals.setupData(VertexBuffer.Usage.Static, 4, VertexBuffer.Format.Byte, nor.flip());
+            normals.setNormalized(true);
+            mesh.setBuffer(normals);
             mesh.setBuffer(VertexBuffer.Type.TexCoord, 4, tex.flip());
             if (shortIndices) {
                 mesh.setBuffer(VertexBuffer.Type.Index, 3, si.flip());
@@ -740,6 +749,26 @@ public final class TerrainBuilder {
             }
             mesh.updateCounts();
             return mesh;
+        }
+
+        /** Unit normals (3 floats a vertex) as signed normalized bytes, 4 a vertex (the fourth 0, for alignment). */
+        private static void putNormals(float[] normals, ByteBuffer out) {
+            byte[] bytes = new byte[normals.length / 3 * 4];
+            for (int k = 0, b = 0; k < normals.length; k += 3, b += 4) {
+                bytes[b] = (byte) Math.round(normals[k] * 127f);
+                bytes[b + 1] = (byte) Math.round(normals[k + 1] * 127f);
+                bytes[b + 2] = (byte) Math.round(normals[k + 2] * 127f);
+            }
+            out.put(bytes);
+        }
+
+        /** Texture coordinates (elevation, flags, grid row, grid column) as shorts, the elevation rounded to the metre. */
+        private static void putTexCoords(float[] texCoords, ShortBuffer out) {
+            short[] shorts = new short[texCoords.length];
+            for (int k = 0; k < texCoords.length; k++) {
+                shorts[k] = (short) Math.round(texCoords[k]);
+            }
+            out.put(shorts);
         }
 
         private static void shiftInto(int[] indices, int base, short[] out, int at) {

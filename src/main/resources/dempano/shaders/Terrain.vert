@@ -6,8 +6,8 @@ precise out vec3 vPosition;
 in vec3 inPosition;      // ECEF, high part (float of the double)
 in vec3 inTexCoord2;     // ECEF, low part (double − high)
 in vec4 inTexCoord3;     // xyz: ellipsoid normal (ECEF); w: height above the ellipsoid as placed, metres
-in vec3 inNormal;        // surface normal (ECEF), for shading
-in vec4 inTexCoord;      // x: terrain elevation, metres; y: flags (debug: 1 filled void, 2 missing tile, 4 tile seam;
+in vec3 inNormal;        // surface normal (ECEF), for shading (signed normalized bytes)
+in vec4 inTexCoord;      // (shorts) x: terrain elevation, metres; y: flags (debug: 1 filled void, 2 missing tile, 4 tile seam;
                          // 8, 16, 24: naming rule, see Terrain.frag); zw: grid row and column in the patch
 uniform mat4 g_ViewProjectionMatrix;
 uniform vec3 m_EyeHigh;

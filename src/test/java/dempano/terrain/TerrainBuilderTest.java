@@ -13,9 +13,12 @@ import dempano.Synthetic;
 import dempano.dem.DemSource;
 import dempano.dem.MissingTilePolicy;
 import dempano.dem.Mosaic;
+import dempano.geo.Ellipsoid;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
+import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
+import java.nio.ShortBuffer;
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -205,7 +208,7 @@ class TerrainBuilderTest {
         int[] rulesSeen = new int[4];
         for (Geometry g : t.drawn()) {
             Mesh mesh = g.getMesh();
-            FloatBuffer tex = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
+            ShortBuffer tex = (ShortBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
             assertEquals(4, mesh.getBuffer(VertexBuffer.Type.TexCoord).getNumComponents(), g.getName());
             IndexBuffer index = mesh.getIndexBuffer();
             int triangles = index.size() / 3;
@@ -216,7 +219,7 @@ class TerrainBuilderTest {
                 int[] list = endingAt[v];
                 endingAt[v] = list == null ? new int[] {p} : new int[] {list[0], p};
                 assertTrue(list == null || list.length == 1, "vertex " + v + " ends three triangles or more in " + g.getName());
-                int rule = (int) tex.get(4 * v + 1) & TerrainBuilder.NAMED_MASK;
+                int rule = tex.get(4 * v + 1) & TerrainBuilder.NAMED_MASK;
                 rulesSeen[rule / 8]++;
                 double[] f = new double[2];
                 for (int c = 0; c < 2; c++) {
@@ -312,6 +315,61 @@ class TerrainBuilderTest {
             }
         }
         assertTrue(up > 0 && walls > 0, up + " terrain triangles, " + walls + " skirt triangles");
+    }
+
+    /** A tilted plane in latitude and longitude: 10 % up northwards, 5 % down eastwards, metres. */
+    static double tilted(double lat, double lon) {
+        return 3000 + 11_000 * (lat - 46.5) - 4_000 * (lon - 8.5);
+    }
+
+    /**
+     * The shading normals, stored as signed normalized bytes, point within 0.5° of the surface's exact normal (the
+     * cross product of the surface's tangents along latitude and longitude, by finite differences of its closed
+     * form), and the elevations, stored as shorts, are the surface's height rounded to the metre: at every grid
+     * vertex of every level.
+     */
+    @Test
+    void compactNormalsAndElevationsHoldTheirStatedPrecision() {
+        DemSource dem = Synthetic.tiles(TerrainBuilderTest::tilted, Synthetic.N, Synthetic.block(45, 7, 3, 3));
+        TerrainBuilder.Terrain t = build(dem, 46.5, 8.5, 20_000, null);
+        double worstDeg = 0, worstMetres = 0;
+        long vertices = 0;
+        double[] a = new double[3], b = new double[3], c = new double[3], d = new double[3];
+        for (Geometry g : t.drawn()) {
+            Mesh mesh = g.getMesh();
+            VertexBuffer normalBuffer = mesh.getBuffer(VertexBuffer.Type.Normal);
+            assertTrue(normalBuffer.isNormalized(), g.getName());
+            ByteBuffer normals = (ByteBuffer) normalBuffer.getData();
+            ShortBuffer tex = (ShortBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord).getData();
+            FloatBuffer high = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.Position).getData();
+            FloatBuffer low = (FloatBuffer) mesh.getBuffer(VertexBuffer.Type.TexCoord2).getData();
+            for (int v = 0; v < mesh.getVertexCount(); v++) {
+                if ((tex.get(4 * v + 1) & TerrainBuilder.NAMED_MASK) >= TerrainBuilder.NAMED_ALONG_COLUMNS) {
+                    continue; // a skirt's lowered twin
+                }
+                double[] p = position(high, low, v);
+                double[] geo = Ellipsoid.toGeodetic(p[0], p[1], p[2]);
+                double step = 1e-5; // degrees: about a metre
+                Ellipsoid.toEcef(geo[0] + step, geo[1], tilted(geo[0] + step, geo[1]), a);
+                Ellipsoid.toEcef(geo[0] - step, geo[1], tilted(geo[0] - step, geo[1]), b);
+                Ellipsoid.toEcef(geo[0], geo[1] + step, tilted(geo[0], geo[1] + step), c);
+                Ellipsoid.toEcef(geo[0], geo[1] - step, tilted(geo[0], geo[1] - step), d);
+                double[] north = {a[0] - b[0], a[1] - b[1], a[2] - b[2]}, east = {c[0] - d[0], c[1] - d[1], c[2] - d[2]};
+                double[] n = {east[1] * north[2] - east[2] * north[1], east[2] * north[0] - east[0] * north[2],
+                        east[0] * north[1] - east[1] * north[0]};
+                double[] stored = {Math.max(-1, normals.get(4 * v) / 127.0), Math.max(-1, normals.get(4 * v + 1) / 127.0),
+                        Math.max(-1, normals.get(4 * v + 2) / 127.0)};
+                double cos = (n[0] * stored[0] + n[1] * stored[1] + n[2] * stored[2])
+                        / Math.sqrt((n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+                        * (stored[0] * stored[0] + stored[1] * stored[1] + stored[2] * stored[2]));
+                worstDeg = Math.max(worstDeg, Math.toDegrees(Math.acos(Math.min(1, cos))));
+                worstMetres = Math.max(worstMetres, Math.abs(tex.get(4 * v) - tilted(geo[0], geo[1])));
+                vertices++;
+            }
+        }
+        assertTrue(vertices > 2_000, vertices + " grid vertices");
+        assertTrue(worstDeg < 0.5, "normal off by " + worstDeg + "°"); // measured 0.33°
+        assertTrue(worstMetres <= 0.51, "elevation off by " + worstMetres + " m");
     }
 
     private static double[] position(FloatBuffer high, FloatBuffer low, int k) {
