@@ -54,8 +54,44 @@ class DistanceImageTest {
         assertTrue(img.getHeight() > h, "legend strip below the picture");
         for (int r = 0; r < h; r++) {
             for (int c = 0; c < w; c++) {
-                assertEquals(DistanceImage.colour(d[3 + r * w + c], 100, 8000), img.getRGB(c, r) & 0xffffff, "pixel " + c + "," + r);
+                assertWithinOneLevel(DistanceImage.colour(d[3 + r * w + c], 100, 8000), img.getRGB(c, r) & 0xffffff, "pixel " + c + "," + r);
             }
+        }
+    }
+
+    /**
+     * The tabulated ramp the picture uses against the exact colour: a million log-uniform distances from 1 m to
+     * 1000 km and the edge cases, for two ranges; every channel within one level, nearly all identical.
+     */
+    @Test
+    void tabulatedRampMatchesTheExactColour() {
+        java.util.Random random = new java.util.Random(19);
+        for (double max : new double[] {100_000, 8_765.4321}) {
+            DistanceImage.Ramp ramp = new DistanceImage.Ramp(100, max);
+            float[] edges = {0f, -0f, -5f, 100f, Math.nextDown(100f), Math.nextUp(100f), (float) max, Math.nextDown((float) max),
+                    Math.nextUp((float) max), Float.MIN_VALUE, Float.MAX_VALUE, Float.POSITIVE_INFINITY,
+                    Float.NEGATIVE_INFINITY, Float.NaN};
+            for (float m : edges) {
+                assertWithinOneLevel(DistanceImage.colour(m, 100, max), ramp.colour(m), m + " m");
+            }
+            assertEquals(0xffffff, ramp.colour(Float.NaN));
+            assertEquals(0xffffff, ramp.colour(Float.POSITIVE_INFINITY));
+            assertEquals(DistanceImage.colour(100, 100, max), ramp.colour(3f));
+            int same = 0, n = 1_000_000;
+            for (int i = 0; i < n; i++) {
+                float m = (float) Math.pow(10, 6 * random.nextDouble());
+                int exact = DistanceImage.colour(m, 100, max), tabulated = ramp.colour(m);
+                assertWithinOneLevel(exact, tabulated, m + " m");
+                same += exact == tabulated ? 1 : 0;
+            }
+            assertTrue(same > 0.99 * n, same + " of " + n + " identical");
+        }
+    }
+
+    private static void assertWithinOneLevel(int want, int got, String where) {
+        for (int shift = 0; shift <= 16; shift += 8) {
+            assertTrue(Math.abs(((got >> shift) & 0xff) - ((want >> shift) & 0xff)) <= 1,
+                    where + ": " + Integer.toHexString(got) + " vs " + Integer.toHexString(want));
         }
     }
 }
