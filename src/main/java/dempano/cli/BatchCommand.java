@@ -99,9 +99,6 @@ public final class BatchCommand implements Callable<Integer> {
         err.printf(Locale.ROOT, "dempano batch: %d rows (%d valid) from %s, DEM %s, into %s%n", rows.size(),
                 parsed.validCount(), viewpoints, dem.describe(), outDir);
         boolean bar = progress || System.console() != null;
-        // PNGs encoded through memory, not ImageIO's disk cache: its stream closer registers a shutdown
-        // hook on first use, which fails ("Shutdown in progress") when Ctrl-C comes before the first write.
-        javax.imageio.ImageIO.setUseCache(false);
         BatchSummary summary;
         java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)

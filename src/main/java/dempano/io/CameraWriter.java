@@ -22,7 +22,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import javax.imageio.ImageIO;
 
 /**
  * Writes a camera's rendered view on the photo's own pixel grid, all or nothing ({@link OutputSet}):
@@ -80,13 +79,13 @@ public final class CameraWriter {
         List<Path> files = new ArrayList<>();
         if (image.hasColour()) {
             BufferedImage rendered = image.image();
-            files.add(set.write(".png", out -> ImageIO.write(rendered, "png", out)));
+            files.add(set.write(".png", out -> Png.write(rendered, out)));
         }
         if (image.hasDistance()) {
             files.add(set.write("-distance.npy", FloatArrayWriter.npy(image.distanceBuffer(), image.heightPx(),
                     image.widthPx())));
             BufferedImage overlay = overlay(image, extras.photo(), extras.summits());
-            files.add(set.write("-overlay.png", out -> ImageIO.write(overlay, "png", out)));
+            files.add(set.write("-overlay.png", out -> Png.write(overlay, out)));
         }
         for (dempano.panorama.Layer l : image.layers()) {
             files.add(set.write("-" + l.fileName() + ".npy", FloatArrayWriter.npy(image.layerBuffer(l), image.heightPx(),

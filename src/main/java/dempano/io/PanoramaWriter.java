@@ -14,7 +14,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import javax.imageio.ImageIO;
 
 /**
  * Writes a panorama's files for a prefix P as one {@link OutputSet}: {@code P.png} (when it has
@@ -96,8 +95,8 @@ public final class PanoramaWriter {
         if (p.hasDistance()) {
             picture = new Thread(() -> {
                 try {
-                    distancePicture[0] = set.write("-distance.png", out -> ImageIO.write(DistanceImage.render(
-                            p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), "png", out));
+                    distancePicture[0] = set.write("-distance.png", out -> Png.write(DistanceImage.render(
+                            p.distanceBuffer(), p.widthPx(), p.heightPx(), p.metadata().rangeMetres()), out));
                 } catch (Throwable t) {
                     pictureFailure[0] = t;
                 }
@@ -108,11 +107,7 @@ public final class PanoramaWriter {
         Throwable failure = null;
         try {
             if (p.hasColour()) {
-                files.add(set.write(".png", out -> {
-                    if (!ImageIO.write(p.image(), "png", out)) {
-                        throw new IOException("no PNG writer");
-                    }
-                }));
+                files.add(set.write(".png", out -> Png.write(p.image(), out)));
             }
             if (p.hasDistance()) {
                 files.add(set.write("-distance." + (options.pfm() ? "pfm" : "npy"), options.pfm()

@@ -20,7 +20,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
-import javax.imageio.ImageIO;
 
 /** Writes summit sightings: {@code P-summits.json}, {@code P-summits.csv} and the labelled {@code P-labels.png}. */
 public final class SummitWriter {
@@ -87,7 +86,7 @@ public final class SummitWriter {
             return List.of(json, csv);
         }
         BufferedImage labelled = labels(p, sightings, options);
-        Path png = set.write("-labels.png", out -> ImageIO.write(labelled, "png", out));
+        Path png = set.write("-labels.png", out -> Png.write(labelled, out));
         return List.of(json, csv, png);
     }
 

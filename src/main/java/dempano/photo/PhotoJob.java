@@ -222,7 +222,7 @@ public final class PhotoJob {
 
     private static byte[] pngBytes(BufferedImage image) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
-        ImageIO.write(image, "png", b);
+        dempano.io.Png.write(image, b);
         return b.toByteArray();
     }
 }
