@@ -202,9 +202,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         double cullBelowDeg = er.bottomDeg() - 3 / req.pixelsPerDegree();
         PanoramaGeometry geometry = PanoramaGeometry.of(req.pixelsPerDegree(), er.bottomDeg(), er.topDeg());
         ViewLayout layout = ViewLayout.forPanorama(geometry, req.views(), req.supersampling());
-        Drawn drawn = draw(req, scene, layout, req.pixelsPerDegree(), cullBelowDeg, clock, progress);
-        Images images = stitch(req, scene, new PanoramaTarget(geometry), layout, drawn, clock, progress);
-        return finish(req, scene, geometry, images, drawing(req, layout, drawn), clock, progress);
+        Drawn drawn = drawAndStitch(req, scene, new Views(new PanoramaTarget(geometry), layout, req.pixelsPerDegree(),
+                cullBelowDeg), clock, progress);
+        return finish(req, scene, geometry, drawn.images(), drawing(req, layout, drawn), clock, progress);
     }
 
     /** Bytes the mosaic's tiles take, for the memory estimate. */
@@ -241,9 +241,8 @@ public final class PanoramaRenderer implements AutoCloseable {
         double viewPixelDeg = Math.toDegrees(2 * layout.halfWidthTan() / layout.widthPx());
         // Terrain wholly below the views' lowest ray, less three view pixels (the 4×4 neighbourhoods), is left out.
         double cullBelowDeg = layout.lowestElevationDeg() - 3 * viewPixelDeg;
-        Drawn drawn = draw(req, scene, layout, 1 / viewPixelDeg, cullBelowDeg, clock, progress);
-        Images images = stitch(req, scene, view, layout, drawn, clock, progress);
-        return finishCamera(request, scene, images, drawing(req, layout, drawn), clock, progress, List.of());
+        Drawn drawn = drawAndStitch(req, scene, new Views(view, layout, 1 / viewPixelDeg, cullBelowDeg), clock, progress);
+        return finishCamera(request, scene, drawn.images(), drawing(req, layout, drawn), clock, progress, List.of());
     }
 
     /** A camera's silhouettes, layers, near-terrain warning and metadata. */
@@ -312,13 +311,13 @@ public final class PanoramaRenderer implements AutoCloseable {
     }
 
     /**
-     * The views as drawn.
+     * The views as drawn and stitched.
      *
-     * @param seen       the triangles seen per view sample (exact distances), else null
+     * @param images     the target's pixels
      * @param nearMetres near plane used
      * @param farMetres  far plane used
      */
-    private record Drawn(ViewCapture[] captures, SeenTriangles seen, double nearMetres, double farMetres, long triangles) {
+    private record Drawn(Images images, double nearMetres, double farMetres, long triangles) {
     }
 
     /** A target's pixels: colour (ARGB, null when not rendered) and distance (metres, +∞ sky), row-major. */
@@ -337,28 +336,61 @@ public final class PanoramaRenderer implements AutoCloseable {
         }
     }
 
-    /** Builds the terrain mesh for the eye and draws the views of a layout. */
-    private Drawn draw(PanoramaRequest req, Scene scene, ViewLayout layout, double pixelsPerDegree, double cullBelowDeg,
-                       Stopwatch clock, Consumer<String> progress) {
+    /**
+     * Passes a render's views are stitched in, each as soon as its views are drawn, while the GL thread draws the
+     * next pass's: at Mount Washington (8 views) the whole process took 2.29 s with 4 passes, 2.33 s with 2, 2.41 s
+     * with 1 (5 alternating runs). Stitching a pass on one core only, to leave the other to the drawing, was slower
+     * (drawing uses about 1.2 cores; the stitch is the longer part).
+     */
+    static final int STITCH_PASSES = 4;
+
+    /** {@link #STITCH_PASSES}, or another count for tests (the passes never change a bit of the output). */
+    private volatile int stitchPasses = STITCH_PASSES;
+
+    /** This renderer stitching in {@code passes} passes (tests: any count gives the same output). */
+    PanoramaRenderer withStitchPasses(int passes) {
+        if (passes < 1) {
+            throw new IllegalArgumentException("passes must be at least 1: " + passes);
+        }
+        stitchPasses = passes;
+        return this;
+    }
+
+    /**
+     * What is drawn for a target: its views and the terrain the level of detail and culling leave.
+     *
+     * @param pixelsPerDegree the level of detail's pixel size
+     * @param cullBelowDeg    terrain wholly below this elevation is left out
+     */
+    private record Views(TargetImage target, ViewLayout layout, double pixelsPerDegree, double cullBelowDeg) {
+    }
+
+    /**
+     * Builds the terrain mesh for the eye, draws the views of a layout and resamples them into the target's pixels
+     * (colour, distance; exact distances where asked) in {@link #STITCH_PASSES} passes of consecutive views, each
+     * stitched as soon as its views are drawn while the GL thread draws on. The stages "draw" and "readback" (GL
+     * thread) therefore overlap "triangles" and "stitch" (this thread's time resolving and stitching).
+     */
+    private Drawn drawAndStitch(PanoramaRequest req, Scene scene, Views views, Stopwatch clock, Consumer<String> progress) {
         Viewpoint eye = scene.eye();
         Mosaic mosaic = scene.mosaic();
+        ViewLayout layout = views.layout();
         progress.accept("building terrain mesh");
         // Far plane: beyond the farthest terrain within range (curvature drops it, height raises it).
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
-        ViewCapture[] captures;
-        SeenTriangles seen = null;
         boolean exact = req.distance() && req.exactDistances();
+        Passes passes = new Passes(req, scene, views, near, far, exact);
         long triangles;
         // The mesh cache's geometries can be in one scene at a time, so it is held from building to
-        // drawing (not through stitching); a concurrent render builds its own geometry meanwhile.
+        // drawing (and the stitching drawing overlaps); a concurrent render builds its own geometry meanwhile.
         boolean withMeshCache = keepMeshes && meshLock.tryLock();
         try {
             // Built without a material: the GL context may still be starting (openInBackground). The material
             // (it needs the context's asset manager) is set on every geometry drawn afterwards.
             TerrainBuilder.Terrain terrain = TerrainBuilder.build(mosaic, eye, req.refraction(), req.rangeMetres(), null,
-                    new TerrainBuilder.Detail(pixelsPerDegree, req.lodErrorPx(), 1, deviations, withMeshCache ? meshes : null,
-                            cullBelowDeg));
+                    new TerrainBuilder.Detail(views.pixelsPerDegree(), req.lodErrorPx(), 1, deviations,
+                            withMeshCache ? meshes : null, views.cullBelowDeg()));
             clock.lap("mesh");
             OffscreenRenderer gl = gl();
             Material material = gl.newTerrainMaterial(req.rangeMetres());
@@ -374,92 +406,215 @@ public final class PanoramaRenderer implements AutoCloseable {
             progress.accept("rendering " + layout.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                     + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
             long[] drawAndRead = new long[2];
-            long resolveNanos = 0;
-            try {
-                // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
-                captures = gl.render(terrain.root(), new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far,
-                        req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), exact, false),
-                        drawAndRead);
-                if (exact) {
-                    // While the geometries' buffers live: the triangles seen, in double precision.
-                    long beforeResolve = System.nanoTime();
-                    seen = SeenTriangleResolver.resolve(terrain.drawn(), captures, new EyePlacement(eye, req.refraction()),
-                            req.rangeMetres());
-                    resolveNanos = System.nanoTime() - beforeResolve;
-                    for (int k = 0; k < captures.length; k++) { // the raw ids are no longer needed
-                        captures[k] = new ViewCapture(captures[k].view(), captures[k].rgba(), captures[k].depth());
-                    }
+            long[] renderNanos = new long[1];
+            // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
+            OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far,
+                    req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), exact, false);
+            java.util.concurrent.BlockingQueue<Object> arrived = new java.util.concurrent.LinkedBlockingQueue<>();
+            Object end = new Object();
+            // The GL thread draws on; this thread waits for it on a helper thread of its own, so as to take the
+            // captures as they come. The helper ends with the drawing (it is joined before anything is released).
+            java.util.concurrent.CompletableFuture<Void> drawing = new java.util.concurrent.CompletableFuture<>();
+            Thread helper = new Thread(() -> {
+                long t0 = System.nanoTime();
+                try {
+                    gl.render(terrain.root(), request, drawAndRead, arrived::add);
+                    renderNanos[0] = System.nanoTime() - t0;
+                    drawing.complete(null);
+                } catch (Throwable t) {
+                    drawing.completeExceptionally(t);
+                } finally {
+                    arrived.add(end);
                 }
+            }, "dempano-draw");
+            helper.setDaemon(true);
+            try {
+                helper.start();
+                ViewCapture[] pass = new ViewCapture[layout.views()];
+                int received = 0;
+                boolean ended = false;
+                int passCount = Math.min(stitchPasses, layout.views());
+                for (int p = 0; p < passCount && !ended; p++) {
+                    // A pass: its share of the views (consecutive: drawn in order), stitched once all came.
+                    java.util.Arrays.fill(pass, null);
+                    int last = (int) ((long) layout.views() * (p + 1) / passCount);
+                    while (received < last) {
+                        Object next = takeUninterruptibly(arrived);
+                        if (next == end) {
+                            ended = true; // the drawing failed: thrown below
+                            break;
+                        }
+                        ViewCapture c = (ViewCapture) next;
+                        pass[c.view()] = c;
+                        received++;
+                    }
+                    if (ended) {
+                        break;
+                    }
+                    if (p == 0) {
+                        progress.accept("stitching");
+                    }
+                    passes.stitch(pass, terrain.drawn());
+                }
+                joinDrawing(helper, drawing);
             } finally {
+                // Never detach or release while the GL thread may still be drawing the scene.
+                joinUninterruptibly(helper);
                 terrain.root().detachAllChildren();
                 List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
                 released.addAll(terrain.evicted());
                 gl.release(released);
             }
-            long afterRender = System.nanoTime();
-            // "render" splits into drawing and reading back; what remains (scene upload, culling, release) is "upload".
-            clock.timings.put("upload", (afterRender - clock.since - drawAndRead[0] - drawAndRead[1] - resolveNanos) / 1e6);
+            clock.timings.put("upload", (renderNanos[0] - drawAndRead[0] - drawAndRead[1]) / 1e6);
             clock.timings.put("draw", drawAndRead[0] / 1e6);
             clock.timings.put("readback", drawAndRead[1] / 1e6);
             if (exact) {
-                clock.timings.put("triangles", resolveNanos / 1e6);
+                clock.timings.put("triangles", passes.resolveNanos / 1e6);
             }
-            clock.since = afterRender;
+            clock.timings.put("stitch", passes.stitchNanos / 1e6);
+            clock.since = System.nanoTime();
         } finally {
             if (withMeshCache) {
                 meshLock.unlock();
             }
         }
-        return new Drawn(captures, seen, near, far, triangles);
+        if (exact) {
+            progress.accept("distances: " + passes.exactPixels + " pixels from the " + passes.seenTriangles
+                    + " triangles seen, " + passes.probedPixels + " by probing the terrain, " + passes.fallbackPixels
+                    + " by inverse depth");
+        }
+        return new Drawn(new Images(passes.argb, passes.distance), near, far, triangles);
+    }
+
+    private static Object takeUninterruptibly(java.util.concurrent.BlockingQueue<Object> queue) {
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    return queue.take();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    private static void joinUninterruptibly(Thread thread) {
+        boolean interrupted = false;
+        while (thread.isAlive()) {
+            try {
+                thread.join();
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Waits for the drawing and throws what it threw, as it threw it. */
+    private static void joinDrawing(Thread helper, java.util.concurrent.CompletableFuture<Void> drawing) {
+        joinUninterruptibly(helper);
+        try {
+            drawing.join();
+        } catch (java.util.concurrent.CompletionException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof RuntimeException r) {
+                throw r;
+            }
+            if (cause instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(cause);
+        }
     }
 
     /**
      * What one stitch with distances was given: enough to run {@link Stitcher#stitch} again on the same views, which
-     * {@link StitchBenchmark} does to time the stitch alone.
+     * {@link StitchBenchmark} does to time the stitch alone (one per pass; the passes fill disjoint pixels).
      */
     record StitchInputs(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                         Stitcher.Exact exact, boolean colour) {
     }
 
-    /** Receives each stitch's inputs where set (benchmarks only); null in normal use. */
+    /** Receives each stitch pass's inputs where set (benchmarks only); null in normal use. */
     static volatile Consumer<StitchInputs> stitchTap;
 
-    /** Resamples drawn views into a target image's pixels (colour, distance), exact distances where asked. */
-    private static Images stitch(PanoramaRequest req, Scene scene, TargetImage target, ViewLayout layout, Drawn drawn,
-                                 Stopwatch clock, Consumer<String> progress) {
-        progress.accept("stitching");
-        ViewCapture[] captures = drawn.captures();
-        int pixels = target.widthPx() * target.heightPx();
-        int[] argb = req.colour() ? new int[pixels] : null;
-        float[] distance = new float[pixels];
-        boolean exact = drawn.seen() != null;
-        if (req.distance()) {
-            // With exact distances on the shader's range, the stitcher converts the few samples it needs itself.
-            float[][] inverseEyeDepth = null;
-            if (!exact || req.depthMode() != DepthMode.SHADER_RANGE) {
-                inverseEyeDepth = new float[captures.length][];
-                for (int k = 0; k < captures.length; k++) {
-                    inverseEyeDepth[k] = Stitcher.inverseEyeDepths(captures[k], layout, req.depthMode(), drawn.nearMetres(),
-                            drawn.farMetres());
+    /** The stitch of one target, pass by pass: its outputs, its counts and the time it took on this thread. */
+    private static final class Passes {
+        final PanoramaRequest req;
+        final Views views;
+        final double nearMetres, farMetres;
+        final EyePlacement placement;
+        final TerrainRayProbe probe;
+        final int[] argb;
+        final float[] distance;
+        long exactPixels, probedPixels, fallbackPixels, seenTriangles, resolveNanos, stitchNanos;
+
+        Passes(PanoramaRequest req, Scene scene, Views views, double nearMetres, double farMetres, boolean exact) {
+            this.req = req;
+            this.views = views;
+            this.nearMetres = nearMetres;
+            this.farMetres = farMetres;
+            placement = exact ? new EyePlacement(scene.eye(), req.refraction()) : null;
+            probe = exact ? new TerrainRayProbe(scene.mosaic(), scene.eye(), req.refraction(), req.rangeMetres()) : null;
+            int pixels = views.target().widthPx() * views.target().heightPx();
+            argb = req.colour() ? new int[pixels] : null;
+            distance = new float[pixels];
+        }
+
+        /**
+         * Resolves the triangles a pass's views saw (while the geometries' buffers live) and stitches the pixels that
+         * sample those views; {@code pass} holds the pass's captures, null for the other views.
+         */
+        void stitch(ViewCapture[] pass, List<com.jme3.scene.Geometry> drawn) {
+            ViewLayout layout = views.layout();
+            SeenTriangles seen = null;
+            if (probe != null) {
+                long beforeResolve = System.nanoTime();
+                seen = SeenTriangleResolver.resolve(drawn, pass, placement, req.rangeMetres());
+                resolveNanos += System.nanoTime() - beforeResolve;
+                seenTriangles += seen.triangles();
+                for (int k = 0; k < pass.length; k++) { // the raw ids are no longer needed
+                    if (pass[k] != null) {
+                        pass[k] = new ViewCapture(pass[k].view(), pass[k].rgba(), pass[k].depth());
+                    }
                 }
             }
-            Stitcher.Exact exactInputs = exact ? new Stitcher.Exact(drawn.seen(), new TerrainRayProbe(scene.mosaic(), scene.eye(),
-                    req.refraction(), req.rangeMetres())) : null;
-            Consumer<StitchInputs> tap = stitchTap;
-            if (tap != null) {
-                tap.accept(new StitchInputs(target, layout, captures, inverseEyeDepth, exactInputs, argb != null));
+            long beforeStitch = System.nanoTime();
+            if (req.distance()) {
+                // With exact distances on the shader's range, the stitcher converts the few samples it needs itself.
+                float[][] inverseEyeDepth = null;
+                if (probe == null || req.depthMode() != DepthMode.SHADER_RANGE) {
+                    inverseEyeDepth = new float[pass.length][];
+                    for (int k = 0; k < pass.length; k++) {
+                        if (pass[k] != null) {
+                            inverseEyeDepth[k] = Stitcher.inverseEyeDepths(pass[k], layout, req.depthMode(), nearMetres,
+                                    farMetres);
+                        }
+                    }
+                }
+                Stitcher.Exact exactInputs = probe != null ? new Stitcher.Exact(seen, probe) : null;
+                ViewCapture[] captures = pass.clone();
+                Consumer<StitchInputs> tap = stitchTap;
+                if (tap != null) {
+                    tap.accept(new StitchInputs(views.target(), layout, captures, inverseEyeDepth, exactInputs, argb != null));
+                }
+                Stitcher.Result stitched = Stitcher.stitch(views.target(), layout, captures, inverseEyeDepth, exactInputs,
+                        argb, distance);
+                exactPixels += stitched.exactPixels();
+                probedPixels += stitched.probedPixels();
+                fallbackPixels += stitched.fallbackPixels();
+            } else {
+                Stitcher.stitchColour(views.target(), layout, pass.clone(), argb, distance);
             }
-            Stitcher.Result stitched = Stitcher.stitch(target, layout, captures, inverseEyeDepth, exactInputs, argb, distance);
-            if (exact) {
-                progress.accept("distances: " + stitched.exactPixels() + " pixels from the " + drawn.seen().triangles()
-                        + " triangles seen, "
-                        + stitched.probedPixels() + " by probing the terrain, " + stitched.fallbackPixels() + " by inverse depth");
-            }
-        } else {
-            Stitcher.stitchColour(target, layout, captures, argb, distance);
+            stitchNanos += System.nanoTime() - beforeStitch;
         }
-        clock.lap("stitch");
-        return new Images(argb, distance);
     }
 
     private static Drawing drawing(PanoramaRequest req, ViewLayout layout, Drawn drawn) {

@@ -8,14 +8,13 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.AtomicReference;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * The stitch alone, timed: renders a panorama once (GL), keeps what its stitch was given, and runs
- * {@link dempano.panorama.Stitcher#stitch} again on it several times. Reports the process's CPU time
+ * The stitch alone, timed: renders a panorama once (GL), keeps what its stitch passes were given, and runs
+ * {@link dempano.panorama.Stitcher#stitch} again on them (all passes, one after the other) several times. Reports the process's CPU time
  * per stitch (all threads: robust to other processes on the machine, unlike wall time) and wall
  * time, minimum, median and maximum, and a checksum of the distance map (equal checksums: the same
  * map, bit for bit). {@code gradle stitchBench -Pruns=N} (Mount Washington, 100 km, 20 px/°; the options
@@ -44,8 +43,8 @@ public final class StitchBenchmark implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        AtomicReference<PanoramaRenderer.StitchInputs> kept = new AtomicReference<>();
-        PanoramaRenderer.stitchTap = kept::set;
+        List<PanoramaRenderer.StitchInputs> kept = java.util.Collections.synchronizedList(new ArrayList<>());
+        PanoramaRenderer.stitchTap = kept::add;
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd)
                 .withElevationRange(dempano.panorama.ElevationRange.parse(elevationRange));
         try (PanoramaRenderer r = PanoramaRenderer.open(new DemDirectory(dem, 64))) {
@@ -53,7 +52,7 @@ public final class StitchBenchmark implements Callable<Integer> {
         } finally {
             PanoramaRenderer.stitchTap = null;
         }
-        PanoramaRenderer.StitchInputs in = kept.get();
+        PanoramaRenderer.StitchInputs in = kept.get(0); // the passes share target, layout and outputs
         int pixels = in.target().widthPx() * in.target().heightPx();
         var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         List<double[]> times = new ArrayList<>();
@@ -63,8 +62,15 @@ public final class StitchBenchmark implements Callable<Integer> {
             int[] argb = in.colour() ? new int[pixels] : null;
             float[] distance = new float[pixels];
             long c0 = os.getProcessCpuTime(), w0 = System.nanoTime();
-            result = dempano.panorama.Stitcher.stitch(in.target(), in.layout(), in.captures(), in.inverseEyeDepth(), in.exact(),
-                    argb, distance);
+            long exactPixels = 0, probed = 0, fallback = 0;
+            for (PanoramaRenderer.StitchInputs pass : kept) {
+                var r = dempano.panorama.Stitcher.stitch(pass.target(), pass.layout(), pass.captures(), pass.inverseEyeDepth(),
+                        pass.exact(), argb, distance);
+                exactPixels += r.exactPixels();
+                probed += r.probedPixels();
+                fallback += r.fallbackPixels();
+            }
+            result = new dempano.panorama.Stitcher.Result(exactPixels, probed, fallback);
             long c1 = os.getProcessCpuTime(), w1 = System.nanoTime();
             if (i > 0) {
                 times.add(new double[] {(c1 - c0) / 1e6, (w1 - w0) / 1e6});

@@ -113,6 +113,11 @@ public final class Stitcher {
      * As {@link #stitch(PanoramaGeometry, ViewLayout, ViewCapture[], float[][], Exact, int[], float[])} for any
      * target image (a panorama or a camera): every pixel's ray is {@link TargetImage#rayOf} at its centre. A pixel
      * without a ray gets black and a NaN distance.
+     *
+     * <p>A null capture leaves the pixels that sample that view untouched: the views can be stitched in passes, a
+     * pass as soon as its views are drawn (each pixel reads one view's samples and its triangles only, so the passes
+     * give the same bits as one stitch). {@code inverseEyeDepth} and {@code exact}'s triangles then need to cover
+     * only the pass's views.
      */
     public static Result stitch(TargetImage target, ViewLayout layout, ViewCapture[] captures, float[][] inverseEyeDepth,
                                 Exact exact, int[] argbOut, float[] rangeOut) {
@@ -291,6 +296,9 @@ public final class Stitcher {
             for (int col = 0; col < width; col++) {
                 int view = sampling.locate(col, row, p, ray);
                 int i = row * width + col;
+                if (view >= 0 && captures[view] == null) {
+                    continue; // a view of another pass (see stitch)
+                }
                 if (view < 0) { // no ray: nothing to see
                     if (argbOut != null) {
                         argbOut[i] = 0xff000000;
@@ -442,6 +450,9 @@ public final class Stitcher {
         int w = layout.widthPx(), h = layout.heightPx();
         int[][] out = new int[triangleOfSample.length][];
         for (int v = 0; v < out.length; v++) {
+            if (triangleOfSample[v] == null) {
+                continue; // a view of another pass
+            }
             int[] tri = triangleOfSample[v], top = new int[w];
             java.util.Arrays.fill(top, -1);
             int open = w;

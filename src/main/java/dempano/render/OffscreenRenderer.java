@@ -256,7 +256,17 @@ public final class OffscreenRenderer {
      * @param scene eye-relative scene (x east, y up, z south)
      */
     public ViewCapture[] render(Node scene, ViewRequest request, long[] drawAndReadNanos) {
-        return onGlThread("rendering", () -> app.renderViews(scene, request, drawAndReadNanos));
+        return render(scene, request, drawAndReadNanos, capture -> { });
+    }
+
+    /**
+     * As {@link #render(Node, ViewRequest, long[])}, handing each view's capture to {@code onView} as soon as it is
+     * read back, in view order, so that a caller can work on the first views while the others are drawn. {@code
+     * onView} runs on the GL thread and must only pass the capture on (the next view is drawn after it returns).
+     */
+    public ViewCapture[] render(Node scene, ViewRequest request, long[] drawAndReadNanos,
+                                java.util.function.Consumer<ViewCapture> onView) {
+        return onGlThread("rendering", () -> app.renderViews(scene, request, drawAndReadNanos, onView));
     }
 
     /** A GL task's result or what it threw (never thrown on the GL thread: jME would log it and hang the caller). */
@@ -476,7 +486,7 @@ public final class OffscreenRenderer {
             return fb;
         }
 
-        ViewCapture[] renderViews(Node scene, ViewRequest request, long[] nanos) {
+        ViewCapture[] renderViews(Node scene, ViewRequest request, long[] nanos, java.util.function.Consumer<ViewCapture> onView) {
             ViewLayout layout = request.layout();
             DepthMode mode = request.mode();
             double near = request.nearMetres(), far = request.farMetres();
@@ -586,6 +596,7 @@ public final class OffscreenRenderer {
                     out[k] = new ViewCapture(k, rgba, d, triangleIds);
                     nanos[0] += t1 - t0;
                     nanos[1] += System.nanoTime() - t1;
+                    onView.accept(out[k]);
                 }
             } finally {
                 GL45.glClipControl(GL30.GL_LOWER_LEFT, GL45.GL_NEGATIVE_ONE_TO_ONE);

@@ -26,7 +26,7 @@ public final class SeenTriangleResolver {
 
     /**
      * @param drawn       the scene's geometries, in the order of their {@link TerrainBuilder#VERTEX_BASE}
-     * @param captures    views read with surfaces
+     * @param captures    views read with surfaces; a null view is left out (its {@code triangleOfSample} null)
      * @param placement   the eye the scene was drawn for
      * @param rangeMetres the shader's range cut
      * @throws IllegalArgumentException when a capture carries no surface identities
@@ -38,14 +38,14 @@ public final class SeenTriangleResolver {
         int[] bases = TerrainBuilder.vertexBases(drawn);
         int totalNames = 2 * bases[drawn.size()]; // below 2^31: vertexBases allows under 2^30 vertices
         for (int k = 0; k < captures.length; k++) {
-            if (captures[k].triangleIds() == null) {
+            if (captures[k] != null && captures[k].triangleIds() == null) {
                 throw new IllegalArgumentException("view " + k + " was read without surface identities");
             }
         }
         // 1. The names seen, per view in parallel (every writer writes 1: the races are benign, and the
         // stream's end makes the writes visible). A name outside the scene (never expected) is not trusted.
         int[] keyOfName = new int[totalNames];
-        IntStream.range(0, captures.length).parallel().forEach(k -> {
+        IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
             int previous = -1; // neighbouring samples mostly share a triangle
             for (int id : captures[k].triangleIds()) {
                 if (id != previous && id >= 0 && id < totalNames) {
@@ -73,7 +73,7 @@ public final class SeenTriangleResolver {
         int seen = distinctTriangles(kg, primitiveOfKey, compactOfKey, seenGeometry, seenPrimitive);
         // 5. Each sample's triangle, per view in parallel.
         int[][] triangleOfSample = new int[captures.length][];
-        IntStream.range(0, captures.length).parallel().forEach(k -> {
+        IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
             int[] ids = captures[k].triangleIds();
             int[] out = new int[ids.length];
             int previousId = -1, previous = -1; // neighbouring samples mostly share a triangle: look up each run once
