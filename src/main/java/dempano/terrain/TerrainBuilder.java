@@ -754,10 +754,11 @@ public final class TerrainBuilder {
         /** Unit normals (3 floats a vertex) as signed normalized bytes, 4 a vertex (the fourth 0, for alignment). */
         private static void putNormals(float[] normals, ByteBuffer out) {
             byte[] bytes = new byte[normals.length / 3 * 4];
+            // (Floors: the client compiler calls Math.round, 12 million times a cold panorama.)
             for (int k = 0, b = 0; k < normals.length; k += 3, b += 4) {
-                bytes[b] = (byte) Math.round(normals[k] * 127f);
-                bytes[b + 1] = (byte) Math.round(normals[k + 1] * 127f);
-                bytes[b + 2] = (byte) Math.round(normals[k + 2] * 127f);
+                bytes[b] = (byte) dempano.util.Floors.floorInt(normals[k] * 127.0 + 0.5);
+                bytes[b + 1] = (byte) dempano.util.Floors.floorInt(normals[k + 1] * 127.0 + 0.5);
+                bytes[b + 2] = (byte) dempano.util.Floors.floorInt(normals[k + 2] * 127.0 + 0.5);
             }
             out.put(bytes);
         }
@@ -765,8 +766,11 @@ public final class TerrainBuilder {
         /** Texture coordinates (elevation, flags, grid row, grid column) as shorts, the elevation rounded to the metre. */
         private static void putTexCoords(float[] texCoords, ShortBuffer out) {
             short[] shorts = new short[texCoords.length];
-            for (int k = 0; k < texCoords.length; k++) {
-                shorts[k] = (short) Math.round(texCoords[k]);
+            for (int k = 0; k < texCoords.length; k += 4) {
+                shorts[k] = (short) dempano.util.Floors.floorInt(texCoords[k] + 0.5);
+                shorts[k + 1] = (short) texCoords[k + 1]; // flags, row and column: integers
+                shorts[k + 2] = (short) texCoords[k + 2];
+                shorts[k + 3] = (short) texCoords[k + 3];
             }
             out.put(shorts);
         }
