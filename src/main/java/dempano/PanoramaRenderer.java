@@ -439,7 +439,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                     java.util.Arrays.fill(pass, null);
                     int last = (int) ((long) layout.views() * (p + 1) / passCount);
                     while (received < last) {
-                        Object next = takeUninterruptibly(arrived);
+                        Object next = take(arrived);
                         if (next == end) {
                             ended = true; // the drawing failed: thrown below
                             break;
@@ -458,12 +458,20 @@ public final class PanoramaRenderer implements AutoCloseable {
                 }
                 joinDrawing(helper, drawing);
             } finally {
-                // Never detach or release while the GL thread may still be drawing the scene.
+                // Never detach or release while the GL thread may still be drawing the scene; release even when
+                // interrupted (the flag is kept for the caller).
                 joinUninterruptibly(helper);
-                terrain.root().detachAllChildren();
-                List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
-                released.addAll(terrain.evicted());
-                gl.release(released);
+                boolean interrupted = Thread.interrupted();
+                try {
+                    terrain.root().detachAllChildren();
+                    List<com.jme3.scene.Spatial> released = new ArrayList<>(terrain.transientParts());
+                    released.addAll(terrain.evicted());
+                    gl.release(released);
+                } finally {
+                    if (interrupted) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
             }
             clock.timings.put("upload", (renderNanos[0] - drawAndRead[0] - drawAndRead[1]) / 1e6);
             clock.timings.put("draw", drawAndRead[0] / 1e6);
@@ -486,20 +494,13 @@ public final class PanoramaRenderer implements AutoCloseable {
         return new Drawn(new Images(passes.argb, passes.distance), near, far, triangles);
     }
 
-    private static Object takeUninterruptibly(java.util.concurrent.BlockingQueue<Object> queue) {
-        boolean interrupted = false;
+    /** The next capture (or the end mark); an interrupt ends the render ("interrupted while rendering"). */
+    private static Object take(java.util.concurrent.BlockingQueue<Object> queue) {
         try {
-            while (true) {
-                try {
-                    return queue.take();
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
-        } finally {
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
+            return queue.take();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while rendering", e);
         }
     }
 

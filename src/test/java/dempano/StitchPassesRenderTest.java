@@ -79,6 +79,37 @@ class StitchPassesRenderTest {
         assertArrayEquals(one.argbArray(), two.argbArray());
     }
 
+    /**
+     * A caller interrupted while the views are drawn gets "interrupted while rendering" with its interrupt flag kept,
+     * once the drawing has ended and the scene's buffers are released: the same renderer then draws the same
+     * panorama a fresh one does.
+     */
+    @Test
+    void anInterruptedRenderSaysSoAndLeavesTheRendererUsable() {
+        InMemoryDem dem = Synthetic.dem(StitchPassesRenderTest::relief, 46, 8, 1, 1);
+        PanoramaRequest request = PanoramaRequest.at(46.5, 8.5).withRangeMetres(30_000).withPixelsPerDegree(6)
+                .withElevationRange(new ElevationRange(-20, 10, false));
+        Panorama again, fresh;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem).withoutMeshCache()) {
+            IllegalStateException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class,
+                    () -> r.render(request, line -> {
+                        if (line.startsWith("rendering")) {
+                            Thread.currentThread().interrupt(); // as a caller's cancel would, while drawing starts
+                        }
+                    }));
+            assertTrue(Thread.interrupted(), "the interrupt flag is kept (and cleared here)");
+            assertEquals("interrupted while rendering", e.getMessage());
+            again = r.render(request);
+        }
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            fresh = r.render(request);
+        }
+        float[] a = fresh.distanceArray(), b = again.distanceArray();
+        for (int i = 0; i < a.length; i++) {
+            assertEquals(0, Float.compare(a[i], b[i]), "distance at pixel " + i);
+        }
+    }
+
     private static String distancesLine(List<String> progress) {
         return progress.stream().filter(l -> l.startsWith("distances:")).findFirst()
                 .orElseThrow(() -> new AssertionError("no distances line: " + progress));
