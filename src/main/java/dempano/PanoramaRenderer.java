@@ -556,6 +556,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         final int[] argb;
         final float[] distance;
         long exactPixels, probedPixels, fallbackPixels, seenTriangles, resolveNanos, stitchNanos;
+        private SeenTriangleResolver.Scene resolver;
 
         Passes(PanoramaRequest req, Scene scene, Views views, double nearMetres, double farMetres, boolean exact) {
             this.req = req;
@@ -578,7 +579,10 @@ public final class PanoramaRenderer implements AutoCloseable {
             SeenTriangles seen = null;
             if (probe != null) {
                 long beforeResolve = System.nanoTime();
-                seen = SeenTriangleResolver.resolve(drawn, pass, placement, req.rangeMetres());
+                if (resolver == null) { // one per render: its tables serve every pass
+                    resolver = new SeenTriangleResolver.Scene(drawn, placement, req.rangeMetres());
+                }
+                seen = resolver.resolve(pass);
                 resolveNanos += System.nanoTime() - beforeResolve;
                 seenTriangles += seen.triangles();
                 for (int k = 0; k < pass.length; k++) { // the raw ids are no longer needed

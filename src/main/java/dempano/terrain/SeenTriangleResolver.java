@@ -35,108 +35,177 @@ public final class SeenTriangleResolver {
      */
     public static SeenTriangles resolve(List<Geometry> drawn, ViewCapture[] captures, EyePlacement placement,
                                         double rangeMetres) {
-        int[] bases = TerrainBuilder.vertexBases(drawn);
-        int totalNames = 2 * bases[drawn.size()]; // below 2^31: vertexBases allows under 2^30 vertices
-        for (int k = 0; k < captures.length; k++) {
-            if (captures[k] != null && captures[k].triangleIds() == null) {
-                throw new IllegalArgumentException("view " + k + " was read without surface identities");
-            }
-        }
-        // 1. The names seen, per view in parallel (every writer writes 1: the races are benign, and the
-        // stream's end makes the writes visible). A name outside the scene (never expected) is not trusted.
-        int[] keyOfName = new int[totalNames];
-        IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
-            int previous = -1; // neighbouring samples mostly share a triangle
-            for (int id : captures[k].triangleIds()) {
-                if (id != previous && id >= 0 && id < totalNames) {
-                    keyOfName[id] = 1;
-                    previous = id;
-                }
-            }
-        });
-        // 2. Keys in the order of the names (so the numbering does not depend on the threads), with their geometries.
-        // (The serial loops are methods of their own: the JIT then compiles them alone, not all of resolve on-stack.)
-        int keys = numberKeys(keyOfName);
-        int[] keyName = new int[keys], keyGeometry = new int[keys];
-        boolean[] geometrySeen = new boolean[drawn.size()];
-        keysToGeometries(keyOfName, bases, keyName, keyGeometry, geometrySeen);
-        Buffers[] buffers = new Buffers[drawn.size()];
-        IntStream.range(0, drawn.size()).parallel().filter(g -> geometrySeen[g])
-                .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
-        // 3. Each name to the triangle it names (−1 for none: never expected).
-        int[] kg = keyGeometry, kn = keyName;
-        int[] primitiveOfKey = new int[keys];
-        IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key]));
-        // 4. Distinct triangles, numbered compactly.
-        int[] compactOfKey = new int[keys];
-        int[] seenGeometry = new int[Math.max(1, keys)], seenPrimitive = new int[Math.max(1, keys)];
-        int seen = distinctTriangles(kg, primitiveOfKey, compactOfKey, seenGeometry, seenPrimitive);
-        // 5. Each sample's triangle, per view in parallel.
-        int[][] triangleOfSample = new int[captures.length][];
-        IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
-            int[] ids = captures[k].triangleIds();
-            int[] out = new int[ids.length];
-            int previousId = -1, previous = -1; // neighbouring samples mostly share a triangle: look up each run once
-            for (int i = 0; i < ids.length; i++) {
-                int id = ids[i];
-                if (id != previousId) {
-                    previousId = id;
-                    previous = id >= 0 && id < totalNames ? compactOfKey[keyOfName[id] - 1] : -1;
-                }
-                out[i] = previous;
-            }
-            triangleOfSample[k] = out;
-        });
-        double[] corners = new double[seen * 9];
-        boolean[] skirt = new boolean[seen], simplified = new boolean[seen];
-        boolean[] fullResolution = new boolean[drawn.size()];
-        for (int g = 0; g < drawn.size(); g++) {
-            fullResolution[g] = Boolean.TRUE.equals(drawn.get(g).getUserData(TerrainBuilder.FULL_RESOLUTION));
-        }
-        int[] sg = seenGeometry, sp = seenPrimitive;
-        IntStream.range(0, seen).parallel().forEach(t -> {
-            double[] v = new double[9];
-            Buffers b = buffers[sg[t]];
-            int p = sp[t];
-            b.place(p, placement, v);
-            simplified[t] = !fullResolution[sg[t]];
-            int i = b.index.get(3 * p), j = b.index.get(3 * p + 1), k = b.index.get(3 * p + 2);
-            skirt[t] = b.sameFoot(i, j) || b.sameFoot(j, k) || b.sameFoot(i, k);
-            int o = 9 * t;
-            corners[o] = v[0];
-            corners[o + 1] = v[1];
-            corners[o + 2] = v[2];
-            for (int a = 0; a < 3; a++) {
-                corners[o + 3 + a] = v[3 + a] - v[a];
-                corners[o + 6 + a] = v[6 + a] - v[a];
-            }
-        });
-        return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
+        return new Scene(drawn, placement, rangeMetres).resolve(captures);
     }
 
-    /** Numbers the names marked 1 in name order, in place (key + 1; 0 stays "unseen"); returns how many. */
-    private static int numberKeys(int[] keyOfName) {
+    /** Names per block of {@link Scene}'s table that a resolve marks as touched (a power of two). */
+    private static final int BLOCK_NAMES = 1024;
+
+    /**
+     * One drawn scene's resolver, for views resolved in several calls (the renderer's stitch passes): the table of
+     * names and each geometry's {@link Buffers} are made once and kept from call to call, and a call reads and
+     * clears only the blocks of the table its views' names fall in (the views of a pass see a small part of the
+     * scene). One call at a time; the geometries' buffers must stay alive while it is used.
+     */
+    public static final class Scene {
+        private final List<Geometry> drawn;
+        private final EyePlacement placement;
+        private final double rangeMetres;
+        private final int[] bases;
+        private final int totalNames;
+        /** Per name: 0 unseen, else (during a call) 1 seen, then its key + 1. All 0 between calls. */
+        private final int[] keyOfName;
+        /** Per block of BLOCK_NAMES names: whether this call marked one in it. All false between calls. */
+        private final boolean[] touched;
+        private final Buffers[] buffers;
+        private final boolean[] fullResolution;
+
+        public Scene(List<Geometry> drawn, EyePlacement placement, double rangeMetres) {
+            this.drawn = drawn;
+            this.placement = placement;
+            this.rangeMetres = rangeMetres;
+            bases = TerrainBuilder.vertexBases(drawn);
+            totalNames = 2 * bases[drawn.size()]; // below 2^31: vertexBases allows under 2^30 vertices
+            keyOfName = new int[totalNames];
+            touched = new boolean[(totalNames + BLOCK_NAMES - 1) / BLOCK_NAMES];
+            buffers = new Buffers[drawn.size()];
+            fullResolution = new boolean[drawn.size()];
+            for (int g = 0; g < drawn.size(); g++) {
+                fullResolution[g] = Boolean.TRUE.equals(drawn.get(g).getUserData(TerrainBuilder.FULL_RESOLUTION));
+            }
+        }
+
+        /** The triangles these views saw (as {@link SeenTriangleResolver#resolve}); null views are left out. */
+        public SeenTriangles resolve(ViewCapture[] captures) {
+            for (int k = 0; k < captures.length; k++) {
+                if (captures[k] != null && captures[k].triangleIds() == null) {
+                    throw new IllegalArgumentException("view " + k + " was read without surface identities");
+                }
+            }
+            try {
+                return resolveMarked(captures);
+            } finally {
+                clearTouched();
+            }
+        }
+
+        private SeenTriangles resolveMarked(ViewCapture[] captures) {
+            int totalNames = this.totalNames;
+            int[] keyOfName = this.keyOfName;
+            boolean[] touched = this.touched;
+            // 1. The names seen, per view in parallel (every writer writes 1 or true: the races are benign, and the
+            // stream's end makes the writes visible). A name outside the scene (never expected) is not trusted.
+            IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
+                int previous = -1; // neighbouring samples mostly share a triangle
+                for (int id : captures[k].triangleIds()) {
+                    if (id != previous && id >= 0 && id < totalNames) {
+                        keyOfName[id] = 1;
+                        touched[id / BLOCK_NAMES] = true;
+                        previous = id;
+                    }
+                }
+            });
+            // 2. Keys in the order of the names (so the numbering does not depend on the threads), with their
+            // geometries. (The serial loops are methods of their own: the JIT then compiles them alone.)
+            int keys = numberKeys(keyOfName, touched);
+            int[] keyName = new int[keys], keyGeometry = new int[keys];
+            boolean[] geometrySeen = new boolean[drawn.size()];
+            keysToGeometries(keyOfName, touched, bases, keyName, keyGeometry, geometrySeen);
+            Buffers[] buffers = this.buffers;
+            IntStream.range(0, drawn.size()).parallel().filter(g -> geometrySeen[g] && buffers[g] == null)
+                    .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
+            // 3. Each name to the triangle it names (−1 for none: never expected).
+            int[] kg = keyGeometry, kn = keyName;
+            int[] primitiveOfKey = new int[keys];
+            IntStream.range(0, keys).parallel().forEach(key -> primitiveOfKey[key] = buffers[kg[key]].triangleNamed(kn[key]));
+            // 4. Distinct triangles, numbered compactly.
+            int[] compactOfKey = new int[keys];
+            int[] seenGeometry = new int[Math.max(1, keys)], seenPrimitive = new int[Math.max(1, keys)];
+            int seen = distinctTriangles(kg, primitiveOfKey, compactOfKey, seenGeometry, seenPrimitive);
+            // 5. Each sample's triangle, per view in parallel.
+            int[][] triangleOfSample = new int[captures.length][];
+            IntStream.range(0, captures.length).filter(k -> captures[k] != null).parallel().forEach(k -> {
+                int[] ids = captures[k].triangleIds();
+                int[] out = new int[ids.length];
+                int previousId = -1, previous = -1; // neighbouring samples mostly share a triangle: look up each run once
+                for (int i = 0; i < ids.length; i++) {
+                    int id = ids[i];
+                    if (id != previousId) {
+                        previousId = id;
+                        previous = id >= 0 && id < totalNames ? compactOfKey[keyOfName[id] - 1] : -1;
+                    }
+                    out[i] = previous;
+                }
+                triangleOfSample[k] = out;
+            });
+            double[] corners = new double[seen * 9];
+            boolean[] skirt = new boolean[seen], simplified = new boolean[seen];
+            int[] sg = seenGeometry, sp = seenPrimitive;
+            IntStream.range(0, seen).parallel().forEach(t -> {
+                double[] v = new double[9];
+                Buffers b = buffers[sg[t]];
+                int p = sp[t];
+                b.place(p, placement, v);
+                simplified[t] = !fullResolution[sg[t]];
+                int i = b.index.get(3 * p), j = b.index.get(3 * p + 1), k = b.index.get(3 * p + 2);
+                skirt[t] = b.sameFoot(i, j) || b.sameFoot(j, k) || b.sameFoot(i, k);
+                int o = 9 * t;
+                corners[o] = v[0];
+                corners[o + 1] = v[1];
+                corners[o + 2] = v[2];
+                for (int a = 0; a < 3; a++) {
+                    corners[o + 3 + a] = v[3 + a] - v[a];
+                    corners[o + 6 + a] = v[6 + a] - v[a];
+                }
+            });
+            return new SeenTriangles(corners, skirt, simplified, triangleOfSample, rangeMetres);
+        }
+
+        /** Back to all 0 and false, block by touched block. */
+        private void clearTouched() {
+            for (int b = 0; b < touched.length; b++) {
+                if (touched[b]) {
+                    java.util.Arrays.fill(keyOfName, b * BLOCK_NAMES, Math.min(totalNames, (b + 1) * BLOCK_NAMES), 0);
+                    touched[b] = false;
+                }
+            }
+        }
+    }
+
+    /** Numbers the names marked 1 in name order, in place (key + 1; 0 stays "unseen"), in touched blocks; returns how many. */
+    private static int numberKeys(int[] keyOfName, boolean[] touched) {
         int keys = 0;
-        for (int name = 0; name < keyOfName.length; name++) {
-            if (keyOfName[name] != 0) {
-                keyOfName[name] = ++keys;
+        for (int b = 0; b < touched.length; b++) {
+            if (!touched[b]) {
+                continue;
+            }
+            for (int name = b * BLOCK_NAMES, end = Math.min(keyOfName.length, name + BLOCK_NAMES); name < end; name++) {
+                if (keyOfName[name] != 0) {
+                    keyOfName[name] = ++keys;
+                }
             }
         }
         return keys;
     }
 
-    /** Each key's geometry and its name within it, and which geometries are seen at all. */
-    private static void keysToGeometries(int[] keyOfName, int[] bases, int[] keyName, int[] keyGeometry,
+    /** Each key's geometry and its name within it, and which geometries are seen at all (touched blocks only). */
+    private static void keysToGeometries(int[] keyOfName, boolean[] touched, int[] bases, int[] keyName, int[] keyGeometry,
                                          boolean[] geometrySeen) {
-        for (int name = 0, g = 0; name < keyOfName.length; name++) {
-            if (keyOfName[name] != 0) {
-                while ((name >>> 1) >= bases[g + 1]) {
-                    g++;
+        int g = 0;
+        for (int b = 0; b < touched.length; b++) {
+            if (!touched[b]) {
+                continue;
+            }
+            for (int name = b * BLOCK_NAMES, end = Math.min(keyOfName.length, name + BLOCK_NAMES); name < end; name++) {
+                if (keyOfName[name] != 0) {
+                    while ((name >>> 1) >= bases[g + 1]) {
+                        g++;
+                    }
+                    int key = keyOfName[name] - 1;
+                    keyGeometry[key] = g;
+                    keyName[key] = name - 2 * bases[g];
+                    geometrySeen[g] = true;
                 }
-                int key = keyOfName[name] - 1;
-                keyGeometry[key] = g;
-                keyName[key] = name - 2 * bases[g];
-                geometrySeen[g] = true;
             }
         }
     }

@@ -100,6 +100,30 @@ class TriangleIdentityTest {
             // incidence where a 1e-7 rad ray difference moves the hit by decimetres. A wrong
             // numbering (another triangle, another geometry's base) misses nearly every ray.
             assertTrue(met >= 0.998 * terrainSamples, met + " of " + terrainSamples + " samples");
+            // One resolver for the views one at a time (the renderer's stitch passes) gives each view what a fresh
+            // resolve of that view alone gives: the same triangles seen (nothing kept from the views before) and,
+            // at every sample, the same corners.
+            SeenTriangleResolver.Scene passes = new SeenTriangleResolver.Scene(terrain.drawn(),
+                    new EyePlacement(eye, refraction), rangeMetres);
+            for (int k = 0; k < captures.length; k++) {
+                ViewCapture[] alone = new ViewCapture[captures.length];
+                alone[k] = captures[k];
+                SeenTriangles inTurn = passes.resolve(alone);
+                SeenTriangles fresh = SeenTriangleResolver.resolve(terrain.drawn(), alone, new EyePlacement(eye, refraction),
+                        rangeMetres);
+                assertEquals(fresh.triangles(), inTurn.triangles(), "view " + k + ": triangles seen");
+                int[] a = fresh.triangleOfSample()[k], b = inTurn.triangleOfSample()[k];
+                for (int i = 0; i < a.length; i++) {
+                    assertEquals(a[i] < 0, b[i] < 0, "view " + k + ", sample " + i);
+                    if (a[i] >= 0) {
+                        assertArrayEquals(Arrays.copyOfRange(fresh.corners(), 9 * a[i], 9 * a[i] + 9),
+                                Arrays.copyOfRange(inTurn.corners(), 9 * b[i], 9 * b[i] + 9), "view " + k + ", sample " + i);
+                    }
+                }
+                for (int other = 0; other < captures.length; other++) {
+                    assertEquals(other == k, inTurn.triangleOfSample()[other] != null, "view " + other + " in pass " + k);
+                }
+            }
         } finally {
             terrain.root().detachAllChildren();
         }
