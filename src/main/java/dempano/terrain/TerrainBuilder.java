@@ -817,6 +817,8 @@ public final class TerrainBuilder {
         private final Mosaic mosaic;
         private final int r0, c0;
         private final double[] sinLat, cosLat, sinLon, cosLon;
+        /** Per row: N(φ)·cos φ and N(φ)(1 − e²)·sin φ, metres (see the constructor). */
+        private final double[] footCos, footSin;
         private final double exaggeration;
 
         Placer(Mosaic mosaic, int r0, int c0, double[] sinLat, double[] cosLat, double[] sinLon, double[] cosLon,
@@ -826,6 +828,15 @@ public final class TerrainBuilder {
             this.r0 = r0;
             this.c0 = c0;
             this.sinLat = sinLat;
+            // Per row, the foot's two latitude terms as Ellipsoid.toEcef forms them (h = 0, the same operations in
+            // the same order, so the same bits): its square root once a row instead of once a vertex.
+            footCos = new double[sinLat.length];
+            footSin = new double[sinLat.length];
+            for (int r = 0; r < sinLat.length; r++) {
+                double n = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat[r] * sinLat[r]);
+                footCos[r] = (n + 0.0) * cosLat[r];
+                footSin[r] = (n * (1 - Ellipsoid.E2) + 0.0) * sinLat[r];
+            }
             this.cosLat = cosLat;
             this.sinLon = sinLon;
             this.cosLon = cosLon;
@@ -840,7 +851,9 @@ public final class TerrainBuilder {
         private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, float[] high, float[] low,
                            float[] up, int k) {
             int ri = Math.max(0, Math.min(sinLat.length - 1, r - r0)), ci = Math.max(0, Math.min(sinLon.length - 1, c - c0));
-            Ellipsoid.toEcef(sinLat[ri], cosLat[ri], sinLon[ci], cosLon[ci], 0, foot);
+            foot[0] = footCos[ri] * cosLon[ci];
+            foot[1] = footCos[ri] * sinLon[ci];
+            foot[2] = footSin[ri];
             double h = elevationMetres - dropMetres;
             double nx = cosLat[ri] * cosLon[ci], ny = cosLat[ri] * sinLon[ci], nz = sinLat[ri];
             // ECEF(φ, λ, h) = ECEF(φ, λ, 0) + h·n̂ with n̂ the ellipsoid normal.
@@ -893,11 +906,18 @@ public final class TerrainBuilder {
         private void placeGrid(PatchWork w, int step, int cs, PatchMesh m) {
             float[] high = m.high(), low = m.low(), up = m.up(), elevations = m.texCoords();
             double[] foot = new double[3];
+            // A full-resolution patch inside the mosaic reads its heights a row at a time (as patchHeights does).
+            boolean rows = step == 1 && w.row0 >= 0 && w.col0 >= 0 && w.row0 + cs <= mosaic.rows()
+                    && w.col0 + cs <= mosaic.cols();
+            float[] rowHeights = rows ? new float[cs] : null;
             for (int gi = 0; gi < cs; gi++) {
                 int r = clampRow(mosaic, w.row0 + gi * step);
+                if (rows) {
+                    mosaic.sampleRow(r, w.col0, cs, rowHeights, 0);
+                }
                 for (int gj = 0; gj < cs; gj++) {
                     int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
-                    float h = drawnHeight(mosaic, r, c);
+                    float h = rows ? (Float.isNaN(rowHeights[gj]) ? 0f : rowHeights[gj]) : drawnHeight(mosaic, r, c);
                     place(r, c, h * exaggeration, 0, foot, high, low, up, k);
                     elevations[4 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
@@ -915,14 +935,19 @@ public final class TerrainBuilder {
         /** Normals (ECEF) from the exact positions: central differences over the drawn grid. */
         private static void gridNormals(int cs, PatchMesh m) {
             float[] high = m.high(), low = m.low(), up = m.up(), normals = m.normals();
+            // Each position read once (a vertex serves four neighbours' differences).
+            double[] p = new double[3 * cs * cs];
+            for (int i = 0; i < p.length; i++) {
+                p[i] = at(high, low, i);
+            }
             for (int k = 0; k < cs * cs; k++) {
                 int gi = k / cs, gj = k % cs;
                 int north = gi > 0 ? k - cs : k, south = gi < cs - 1 ? k + cs : k;
                 int left = gj > 0 ? k - 1 : k, right = gj < cs - 1 ? k + 1 : k;
-                double ax = at(high, low, 3 * right) - at(high, low, 3 * left), ay = at(high, low, 3 * right + 1) - at(high, low, 3 * left + 1);
-                double az = at(high, low, 3 * right + 2) - at(high, low, 3 * left + 2);
-                double bx = at(high, low, 3 * south) - at(high, low, 3 * north), by = at(high, low, 3 * south + 1) - at(high, low, 3 * north + 1);
-                double bz = at(high, low, 3 * south + 2) - at(high, low, 3 * north + 2);
+                double ax = p[3 * right] - p[3 * left], ay = p[3 * right + 1] - p[3 * left + 1];
+                double az = p[3 * right + 2] - p[3 * left + 2];
+                double bx = p[3 * south] - p[3 * north], by = p[3 * south + 1] - p[3 * north + 1];
+                double bz = p[3 * south + 2] - p[3 * north + 2];
                 // (b × a) points up for a = east, b = south.
                 double nx = by * az - bz * ay, ny = bz * ax - bx * az, nz = bx * ay - by * ax;
                 double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
