@@ -19,6 +19,14 @@ abstract class ViewSampling {
      */
     abstract int locate(int col, int row, double[] p, double[] ray);
 
+    /**
+     * The view {@link #locate} would give, where that is known without locating the pixel (an array look-up), else
+     * −2: lets a stitch pass skip the pixels of other passes' views cheaply.
+     */
+    int knownView(int col, int row) {
+        return -2;
+    }
+
     /** For a target on a layout: the panorama's own fast walk when both are the ring's, else the general one. */
     static ViewSampling of(TargetImage target, ViewLayout layout) {
         if (target instanceof PanoramaTarget pt && layout.ring()) {
@@ -67,6 +75,11 @@ abstract class ViewSampling {
                 cosEl[row] = Math.cos(elRad);
             }
             yScale = layout.heightPx() / (layout.topTan() - layout.bottomTan());
+        }
+
+        @Override
+        int knownView(int col, int row) {
+            return viewOfCol[col];
         }
 
         @Override
