@@ -380,7 +380,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         double far = Math.hypot(req.rangeMetres() * 1.05, 20_000) + 1000;
         double near = safeNearMetres(req.nearMetres(), mosaic, eye, layout);
         boolean exact = req.distance() && req.exactDistances();
-        Passes passes = new Passes(req, scene, views, near, far, exact);
+        Passes passes;
         long triangles;
         // The mesh cache's geometries can be in one scene at a time, so it is held from building to
         // drawing (and the stitching drawing overlaps); a concurrent render builds its own geometry meanwhile.
@@ -402,6 +402,7 @@ public final class PanoramaRenderer implements AutoCloseable {
                 g.setMaterial(material);
             }
             clock.lap("context");
+            passes = new Passes(req, scene, views, near, far, exact);
             triangles = terrain.triangles();
             progress.accept("rendering " + layout.views() + " views of " + layout.widthPx() + "×" + layout.heightPx()
                     + " (" + triangles / 1_000_000.0 + " M triangles, " + terrain.reusedPatches() + " patches reused)");
