@@ -313,6 +313,15 @@ public final class Mosaic {
 
     /** Height of a sample, metres; NaN where the range circle did not need the tile. */
     public float sample(int row, int col) {
+        if (row >= 0 && col >= 0 && row < rows && col < cols) {
+            // Most samples: the tile is there at the mosaic's resolution; what locate() and the general path below
+            // would give, without packing and unpacking its result (the ray probe asks millions a panorama).
+            int tr = tileOfRow[row], tc = tileOfCol[col];
+            HgtTile t = tiles[tr][tc];
+            if (t != null && t.intervalsPerDegree() == intervalsPerDegree) {
+                return t.heightMetres(row - tr * intervalsPerDegree, col - tc * intervalsPerDegree);
+            }
+        }
         long at = locate(row, col);
         if (at < 0) {
             return at == SEA_LEVEL ? 0f : Float.NaN;
