@@ -584,8 +584,14 @@ public final class Stitcher {
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;
         for (int k = 0; k < n; k++) {
             double d = seen.cornerDistanceMetres(candidates[k]);
-            nearestCorner = Math.min(nearestCorner, d);
-            farthestCorner = Math.max(farthestCorner, d);
+            // (Comparisons, not Math.min/max, which the client compiler calls: a corner's distance is a square
+            // root of a sum of squares, never NaN or −0, where the two agree.)
+            if (d < nearestCorner) {
+                nearestCorner = d;
+            }
+            if (d > farthestCorner) {
+                farthestCorner = d;
+            }
         }
         hint.skyInCentre = skyInCentre;
         hint.nearestCornerMetres = nearestCorner;

@@ -279,7 +279,10 @@ public final class TerrainRayProbe implements RayProbe {
         double best = Double.POSITIVE_INFINITY;
         for (int k = 0; k < 2; k++) {
             int[] t = nwToSe ? NW_SE_TRIANGLES[k] : NE_SW_TRIANGLES[k];
-            best = Math.min(best, rayTriangle(e, n, u, corner[t[0]], corner[t[1]], corner[t[2]], w.tri));
+            double hit = rayTriangle(e, n, u, corner[t[0]], corner[t[1]], corner[t[2]], w.tri);
+            if (hit < best) { // (not Math.min, which the client compiler calls: a hit is positive or +∞, never NaN)
+                best = hit;
+            }
         }
         return best;
     }
