@@ -458,14 +458,14 @@ public final class TerrainRayProbe implements RayProbe {
      * the level's blocks it can pass over (level −1: single cells), lifted by refraction.
      */
     private boolean above(int level, double[] anchor, double anchorT, double t0, double t1, double horizontalShare) {
-        double lowest = anchor[HEIGHT] + Math.min(anchor[RISE] * (t0 - anchorT), anchor[RISE] * (t1 - anchorT)) - HEIGHT_MARGIN_METRES;
+        double lowest = anchor[HEIGHT] + lesser(anchor[RISE] * (t0 - anchorT), anchor[RISE] * (t1 - anchorT)) - HEIGHT_MARGIN_METRES;
         double reach = (t1 - anchorT) * horizontalShare;
-        double lift = Math.max(anchor[LIFT], refraction.liftMetres(anchor[GROUND] + reach));
+        double lift = greater(anchor[LIFT], refraction.liftMetres(anchor[GROUND] + reach));
         double margin = PATH_MARGIN_CELLS + (reach / ANCHOR_SPAN_METRES) * (reach / ANCHOR_SPAN_METRES);
         double row0 = anchor[ROW] + anchor[ROW_RATE] * (t0 - anchorT), row1 = anchor[ROW] + anchor[ROW_RATE] * (t1 - anchorT);
         double col0 = anchor[COL] + anchor[COL_RATE] * (t0 - anchorT), col1 = anchor[COL] + anchor[COL_RATE] * (t1 - anchorT);
-        int r0 = Floors.floorInt(Math.min(row0, row1) - margin), r1 = Floors.floorInt(Math.max(row0, row1) + margin) + 1;
-        int c0 = Floors.floorInt(Math.min(col0, col1) - margin), c1 = Floors.floorInt(Math.max(col0, col1) + margin) + 1;
+        int r0 = Floors.floorInt(lesser(row0, row1) - margin), r1 = Floors.floorInt(greater(row0, row1) + margin) + 1;
+        int c0 = Floors.floorInt(lesser(col0, col1) - margin), c1 = Floors.floorInt(greater(col0, col1) + margin) + 1;
         if (r0 < 0 || c0 < 0 || r1 >= mosaic.rows() || c1 >= mosaic.cols()) {
             return false; // may leave the mosaic: decided by computing the ray
         }
@@ -489,6 +489,19 @@ public final class TerrainRayProbe implements RayProbe {
             }
         }
         return true;
+    }
+
+    /**
+     * Math.min for {@link #above}, small enough for the client compiler to inline (it calls Math.min): NaN if either
+     * is NaN, as Math.min; of +0 and −0 it may give either, which the sums it feeds do not tell apart.
+     */
+    private static double lesser(double a, double b) {
+        return a < b || a != a ? a : b;
+    }
+
+    /** Math.max likewise ({@link #lesser}). */
+    private static double greater(double a, double b) {
+        return a > b || a != a ? a : b;
     }
 
     /**
