@@ -275,8 +275,11 @@ public final class Stitcher {
         final double[][] scratch = new double[4][4]; // one neighbourhood buffer per worker, not per pixel
         final double[] p = new double[4], ray = new double[3], span = new double[2];
         final ExactHint hint = new ExactHint();
-        /** Whether some views are left to other passes (null captures). */
-        final boolean partial;
+        /**
+         * Where some views are left to other passes (null captures): the columns that may sample this pass's views
+         * (a column wholly in another pass's view is skipped whole); null for every column.
+         */
+        final int[] columns;
         long exactPixels, probedPixels, fallbackPixels;
 
         // The shared inputs copied into final fields of the worker's own object: read per pixel, kept close.
@@ -291,18 +294,18 @@ public final class Stitcher {
             this.topTerrainRow = r.topTerrainRow();
             this.argbOut = r.argbOut();
             this.rangeOut = r.rangeOut();
-            this.partial = java.util.Arrays.asList(captures).contains(null);
+            this.columns = java.util.Arrays.asList(captures).contains(null)
+                    ? IntStream.range(0, width).filter(col -> {
+                        int view = sampling.columnView(col);
+                        return view < 0 || captures[view] != null;
+                    }).toArray() : null;
         }
 
         void stitch(int row) {
             double[] p = this.p, ray = this.ray;
-            for (int col = 0; col < width; col++) {
-                if (partial) {
-                    int known = sampling.knownView(col, row);
-                    if (known >= 0 && captures[known] == null) {
-                        continue; // a view of another pass (see stitch), known without locating the pixel
-                    }
-                }
+            int[] columns = this.columns;
+            for (int k = 0, count = columns == null ? width : columns.length; k < count; k++) {
+                int col = columns == null ? k : columns[k];
                 int view = sampling.locate(col, row, p, ray);
                 int i = row * width + col;
                 if (view >= 0 && captures[view] == null) {

@@ -20,10 +20,10 @@ abstract class ViewSampling {
     abstract int locate(int col, int row, double[] p, double[] ray);
 
     /**
-     * The view {@link #locate} would give, where that is known without locating the pixel (an array look-up), else
-     * −2: lets a stitch pass skip the pixels of other passes' views cheaply.
+     * The view {@link #locate} gives for every pixel of a column, where that holds for the whole column (an array
+     * look-up), else −2: lets a stitch pass skip the columns of other passes' views without visiting their pixels.
      */
-    int knownView(int col, int row) {
+    int columnView(int col) {
         return -2;
     }
 
@@ -78,7 +78,7 @@ abstract class ViewSampling {
         }
 
         @Override
-        int knownView(int col, int row) {
+        int columnView(int col) {
             return viewOfCol[col];
         }
 
