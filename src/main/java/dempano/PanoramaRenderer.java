@@ -461,7 +461,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             } finally {
                 // Never detach or release while the GL thread may still be drawing the scene; release even when
                 // interrupted (the flag is kept for the caller).
-                joinUninterruptibly(helper);
+                dempano.util.Threads.joinUninterruptibly(helper);
                 boolean interrupted = Thread.interrupted();
                 try {
                     terrain.root().detachAllChildren();
@@ -505,23 +505,9 @@ public final class PanoramaRenderer implements AutoCloseable {
         }
     }
 
-    private static void joinUninterruptibly(Thread thread) {
-        boolean interrupted = false;
-        while (thread.isAlive()) {
-            try {
-                thread.join();
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
-    }
-
     /** Waits for the drawing and throws what it threw, as it threw it. */
     private static void joinDrawing(Thread helper, java.util.concurrent.CompletableFuture<Void> drawing) {
-        joinUninterruptibly(helper);
+        dempano.util.Threads.joinUninterruptibly(helper);
         try {
             drawing.join();
         } catch (java.util.concurrent.CompletionException e) {

@@ -119,7 +119,7 @@ public final class PanoramaWriter {
         }
         if (picture != null) {
             // Never return (or throw) with the second thread still writing.
-            joinUninterruptibly(picture);
+            dempano.util.Threads.joinUninterruptibly(picture);
             if (pictureFailure[0] != null) {
                 if (failure == null) {
                     failure = pictureFailure[0];
@@ -148,21 +148,6 @@ public final class PanoramaWriter {
         String text = metadataJson(p, listed);
         files.add(set.write(".json", out -> out.write(text.getBytes(StandardCharsets.UTF_8))));
         return files;
-    }
-
-    private static void joinUninterruptibly(Thread t) {
-        boolean interrupted = false;
-        while (true) {
-            try {
-                t.join();
-                break;
-            } catch (InterruptedException e) {
-                interrupted = true; // the file is being written: finish waiting, then restore the flag
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
     }
 
     /** The metadata document (see README for the fields). */

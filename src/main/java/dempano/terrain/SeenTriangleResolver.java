@@ -107,10 +107,11 @@ public final class SeenTriangleResolver {
             });
             // 2. Keys in the order of the names (so the numbering does not depend on the threads), with their
             // geometries. (The serial loops are methods of their own: the JIT then compiles them alone.)
-            int keys = numberKeys(keyOfName, touched);
+            int[] names = numberKeys(keyOfName, touched);
+            int keys = names.length;
             int[] keyName = new int[keys], keyGeometry = new int[keys];
             boolean[] geometrySeen = new boolean[drawn.size()];
-            keysToGeometries(keyOfName, touched, bases, keyName, keyGeometry, geometrySeen);
+            keysToGeometries(names, bases, keyName, keyGeometry, geometrySeen);
             Buffers[] buffers = this.buffers;
             IntStream.range(0, drawn.size()).parallel().filter(g -> geometrySeen[g] && buffers[g] == null)
                     .forEach(g -> buffers[g] = new Buffers(drawn.get(g).getMesh()));
@@ -172,8 +173,12 @@ public final class SeenTriangleResolver {
         }
     }
 
-    /** Numbers the names marked 1 in name order, in place (key + 1; 0 stays "unseen"), in touched blocks; returns how many. */
-    private static int numberKeys(int[] keyOfName, boolean[] touched) {
+    /**
+     * Numbers the names marked 1 in name order, in place (key + 1; 0 stays "unseen"), in touched blocks; returns
+     * the names in key order (the one scan of the table: the geometries are then found from this list).
+     */
+    private static int[] numberKeys(int[] keyOfName, boolean[] touched) {
+        int[] names = new int[1024];
         int keys = 0;
         for (int b = 0; b < touched.length; b++) {
             if (!touched[b]) {
@@ -181,32 +186,28 @@ public final class SeenTriangleResolver {
             }
             for (int name = b * BLOCK_NAMES, end = Math.min(keyOfName.length, name + BLOCK_NAMES); name < end; name++) {
                 if (keyOfName[name] != 0) {
+                    if (keys == names.length) {
+                        names = Arrays.copyOf(names, 2 * keys);
+                    }
+                    names[keys] = name;
                     keyOfName[name] = ++keys;
                 }
             }
         }
-        return keys;
+        return Arrays.copyOf(names, keys);
     }
 
-    /** Each key's geometry and its name within it, and which geometries are seen at all (touched blocks only). */
-    private static void keysToGeometries(int[] keyOfName, boolean[] touched, int[] bases, int[] keyName, int[] keyGeometry,
-                                         boolean[] geometrySeen) {
+    /** Each key's geometry and its name within it, and which geometries are seen at all ({@code names} ascending). */
+    private static void keysToGeometries(int[] names, int[] bases, int[] keyName, int[] keyGeometry, boolean[] geometrySeen) {
         int g = 0;
-        for (int b = 0; b < touched.length; b++) {
-            if (!touched[b]) {
-                continue;
+        for (int key = 0; key < names.length; key++) {
+            int name = names[key];
+            while ((name >>> 1) >= bases[g + 1]) {
+                g++;
             }
-            for (int name = b * BLOCK_NAMES, end = Math.min(keyOfName.length, name + BLOCK_NAMES); name < end; name++) {
-                if (keyOfName[name] != 0) {
-                    while ((name >>> 1) >= bases[g + 1]) {
-                        g++;
-                    }
-                    int key = keyOfName[name] - 1;
-                    keyGeometry[key] = g;
-                    keyName[key] = name - 2 * bases[g];
-                    geometrySeen[g] = true;
-                }
-            }
+            keyGeometry[key] = g;
+            keyName[key] = name - 2 * bases[g];
+            geometrySeen[g] = true;
         }
     }
 

@@ -843,13 +843,13 @@ public final class TerrainBuilder {
         }
 
         /**
-         * Places mosaic sample (r, c) at an elevation lowered by a drop: its ECEF position (double,
-         * no refraction: the shader lifts it for each eye) as double-single into {@code high} and
-         * {@code low}, and its ellipsoid
-         * normal and height above the ellipsoid into {@code up} (4 floats).
+         * Places mosaic sample (r, c) at an elevation lowered by a drop as vertex k of {@code m}: its ECEF
+         * position (double, no refraction: the shader lifts it for each eye) as double-single into
+         * {@code m.high()} and {@code m.low()}, and its ellipsoid normal and height above the ellipsoid into
+         * {@code m.up()} (4 floats).
          */
-        private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, float[] high, float[] low,
-                           float[] up, int k) {
+        private void place(int r, int c, double elevationMetres, double dropMetres, double[] foot, PatchMesh m, int k) {
+            float[] high = m.high(), low = m.low(), up = m.up();
             int ri = Math.max(0, Math.min(sinLat.length - 1, r - r0)), ci = Math.max(0, Math.min(sinLon.length - 1, c - c0));
             foot[0] = footCos[ri] * cosLon[ci];
             foot[1] = footCos[ri] * sinLon[ci];
@@ -918,7 +918,7 @@ public final class TerrainBuilder {
                 for (int gj = 0; gj < cs; gj++) {
                     int c = clampCol(mosaic, w.col0 + gj * step), k = gi * cs + gj;
                     float h = rows ? (Float.isNaN(rowHeights[gj]) ? 0f : rowHeights[gj]) : drawnHeight(mosaic, r, c);
-                    place(r, c, h * exaggeration, 0, foot, high, low, up, k);
+                    place(r, c, h * exaggeration, 0, foot, m, k);
                     elevations[4 * k] = h;
                     boolean seam = r % mosaic.intervalsPerDegree() == 0 || c % mosaic.intervalsPerDegree() == 0;
                     // The split of the cell whose north-west corner this is (a chessboard: the same for the cell
@@ -1001,7 +1001,7 @@ public final class TerrainBuilder {
             for (int t = 0; t < cs; t++) {
                 int v = edgeVertex(e, t, cs), gi = v / cs, gj = v % cs, k = twin + t;
                 int r = clampRow(mosaic, w.row0 + gi * step), c = clampCol(mosaic, w.col0 + gj * step);
-                place(r, c, elevations[4 * v] * exaggeration, depthMetres, foot, high, low, up, k);
+                place(r, c, elevations[4 * v] * exaggeration, depthMetres, foot, m, k);
                 System.arraycopy(normals, 3 * v, normals, 3 * k, 3);
                 System.arraycopy(elevations, 4 * v, elevations, 4 * k, 4); // the grid position of its top too
                 elevations[4 * k + 1] = ((int) elevations[4 * v + 1] & ~NAMED_MASK)
