@@ -3,6 +3,8 @@ package dempano.bench;
 import dempano.camera.CameraIntrinsics;
 import dempano.camera.CameraOrientation;
 import dempano.camera.CameraView;
+import dempano.dem.TileId;
+import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
 import java.awt.Color;
@@ -127,6 +129,87 @@ final class SyntheticPhoto {
             crossing += topSky && bottomLand ? 1 : 0;
         }
         return crossing / Math.ceil(w / 4.0);
+    }
+
+    /** How far (degrees of latitude and of longitude) terrain shown must stay from a missing tile. */
+    static final double MISSING_DATA_MARGIN_DEG = 0.01;
+
+    /**
+     * Where the reference panorama's terrain lies on missing DEM data. A missing tile is drawn as sea level, so
+     * a photo that sees it shows the data's edge (a cliff down to a plain), not the landscape.
+     */
+    static final class MissingData {
+        private final Panorama ref;
+        private final float[] distance, lat, lon;
+        private final java.util.function.Predicate<TileId> present;
+
+        /**
+         * @param ref     the reference panorama, with its {@link Layer#LATITUDE} and {@link Layer#LONGITUDE} layers
+         * @param present whether a tile has data
+         */
+        MissingData(Panorama ref, java.util.function.Predicate<TileId> present) {
+            this.ref = ref;
+            this.distance = ref.distanceArray();
+            this.lat = ref.layer(Layer.LATITUDE);
+            this.lon = ref.layer(Layer.LONGITUDE);
+            this.present = present;
+        }
+
+        /**
+         * Share of a photo's columns (every 4th) that show terrain on missing data: a sample of the terrain
+         * seen (the column's first terrain pixel, the skyline, and every 8th pixel below it) lying in a missing
+         * tile or within {@value SyntheticPhoto#MISSING_DATA_MARGIN_DEG}° (about 1 km) of one.
+         */
+        double share(int w, int h, CameraOrientation o, double hfovDeg) {
+            CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
+            double[] ray = new double[3];
+            int columns = 0, onMissing = 0;
+            for (int i = 0; i < w; i += 4) {
+                columns++;
+                boolean skyline = true;
+                for (int j = 0; j < h; j++) {
+                    view.rayOf(i, j, ray);
+                    int k = pixelOf(ref, ray);
+                    if (k < 0 || !Float.isFinite(distance[k])) {
+                        continue;
+                    }
+                    if (skyline || j % 8 == 0) {
+                        skyline = false;
+                        if (nearMissing(lat[k], lon[k], present)) {
+                            onMissing++;
+                            break;
+                        }
+                    }
+                }
+            }
+            return onMissing / (double) columns;
+        }
+    }
+
+    private static boolean nearMissing(double latDeg, double lonDeg, java.util.function.Predicate<TileId> present) {
+        double m = MISSING_DATA_MARGIN_DEG;
+        for (double dLat = -m; dLat <= m; dLat += m) {
+            for (double dLon = -m; dLon <= m; dLon += m) {
+                if (!present.test(TileId.containing(latDeg + dLat, wrap180(lonDeg + dLon)))) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private static double wrap180(double lonDeg) {
+        return lonDeg - 360 * Math.floor((lonDeg + 180) / 360);
+    }
+
+    /** The panorama pixel (row-major index) a ray falls on; −1 above or below the panorama. */
+    private static int pixelOf(Panorama ref, double[] ray) {
+        double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
+        double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
+        PanoramaGeometry g = ref.geometry();
+        int c = Math.floorMod((int) Math.floor(g.columnOf(az)), g.widthPx());
+        int r = (int) Math.floor(g.rowOf(el));
+        return r < 0 || r >= g.heightPx() ? -1 : r * g.widthPx() + c;
     }
 
     private static double sample(Panorama ref, double[] ray) {
