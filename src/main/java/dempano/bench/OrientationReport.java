@@ -112,7 +112,8 @@ public final class OrientationReport {
               1.25 × farther, across a break in inverse distance) and their exact Euclidean distance transform.
             - `OrientationEstimator`: coarse, for every heading (0.25° steps, or within a prior) and every FOV (1.5 %
               steps in 15°–100°) the skyline samples are placed as a level pinhole camera sees them; pitch and roll are
-              removed by a robust linear fit (median start, two trimmed least-squares passes) of θ·cos α − φ·sin α;
+              removed by a robust linear fit of θ·cos α − φ·sin α (a median start at each start roll, 3° apart over the roll's
+              range, the best by truncated score; then trimmed least-squares passes);
               score = mean truncated residual. The 12 best distinct local optima over all FOVs (6 without inner edges),
               and in each FOV bin (ratio 1.25: nine bins) its two best distinct headings, are refined with
               the exact camera model by Levenberg–Marquardt on truncated squared pixel residuals (truncation 12 → 6 →
