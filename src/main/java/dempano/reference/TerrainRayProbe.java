@@ -9,6 +9,7 @@ import dempano.panorama.RayProbe;
 import dempano.terrain.LevelOfDetail;
 import dempano.terrain.Triangulation;
 import dempano.util.Floors;
+import dempano.util.SmallAngles;
 
 /**
  * A ray's first crossing with the full-resolution triangulated surface (the surface the CPU
@@ -57,6 +58,8 @@ public final class TerrainRayProbe implements RayProbe {
     private final Refraction refraction;
     private final double rangeMetres;
     private final double[] eyeFoot = new double[3];
+    /** The eye's latitude and longitude, degrees, with their cosines and sines. */
+    private final double eyeLatDeg, eyeLonDeg, eyeCosLat, eyeSinLat, eyeCosLon, eyeSinLon;
     /** Cell steps' horizontal length: one of the mosaic's cells, the narrower (east–west) way. */
     private final double cellStepMetres;
     /** A cell's longer side (north–south), metres. */
@@ -109,6 +112,12 @@ public final class TerrainRayProbe implements RayProbe {
         this.rangeMetres = rangeMetres;
         this.surface = new ReferenceRenderer.Surface(mosaic, eye, refraction);
         Ellipsoid.toEcef(eye.latDeg(), eye.lonDeg(), 0, eyeFoot);
+        this.eyeLatDeg = eye.latDeg();
+        this.eyeLonDeg = eye.lonDeg();
+        this.eyeCosLat = Math.cos(Math.toRadians(eyeLatDeg));
+        this.eyeSinLat = Math.sin(Math.toRadians(eyeLatDeg));
+        this.eyeCosLon = Math.cos(Math.toRadians(eyeLonDeg));
+        this.eyeSinLon = Math.sin(Math.toRadians(eyeLonDeg));
         double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree();
         this.cellStepMetres = cellMetres * Math.max(0.05, Math.cos(Math.toRadians(eye.latDeg())));
         this.cellLongestMetres = cellMetres;
@@ -617,8 +626,8 @@ public final class TerrainRayProbe implements RayProbe {
             return c;
         }
         // Bowring's closed form (one step from the parametric latitude): under 1e-7 m in height
-        // and 1e-12 rad in latitude for terrestrial heights (TerrainRayProbeTest), and trig-free
-        // but for two atan2, which matters here: the probe runs a dozen of these per probed pixel.
+        // and 1e-12 rad in latitude for terrestrial heights (TerrainRayProbeTest), and trig-free,
+        // which matters here: the probe runs a dozen of these per probed pixel.
         double za = z * Ellipsoid.A_METRES, pb = p * Ellipsoid.B_METRES, q = Math.sqrt(za * za + pb * pb);
         double st = za / q, ct = pb / q;
         double num = z + SECOND_ECCENTRICITY_SQ * Ellipsoid.B_METRES * st * st * st;
@@ -626,7 +635,15 @@ public final class TerrainRayProbe implements RayProbe {
         double r = Math.sqrt(num * num + den * den), sinLat = num / r, cosLat = den / r;
         double nRadius = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat);
         double height = p * cosLat + z * sinLat - Ellipsoid.A_METRES * Ellipsoid.A_METRES / nRadius;
-        double latDeg = Math.toDegrees(Math.atan2(num, den)), lonDeg = Math.toDegrees(Math.atan2(y, x));
+        // Latitude and longitude as angles from the eye's (atan2's fdlibm call is native in JDK 17, and this
+        // runs a dozen times per probed pixel): within a few 1e-16 rad of atan2, SmallAnglesTest.
+        double latDeg = eyeLatDeg + Math.toDegrees(SmallAngles.angleFrom(num, den, eyeCosLat, eyeSinLat));
+        double lonDeg = eyeLonDeg + Math.toDegrees(SmallAngles.angleFrom(y, x, eyeCosLon, eyeSinLon));
+        if (lonDeg > 180) {
+            lonDeg -= 360;
+        } else if (lonDeg < -180) {
+            lonDeg += 360;
+        }
         double fx = nRadius * cosLat * x / p - eyeFoot[0], fy = nRadius * cosLat * y / p - eyeFoot[1],
                 fz = nRadius * (1 - Ellipsoid.E2) * sinLat - eyeFoot[2];
         double ground = Refraction.groundDistanceFromChordMetres(Math.sqrt(fx * fx + fy * fy + fz * fz));
