@@ -202,26 +202,23 @@ final class SyntheticPhoto {
         return lonDeg - 360 * Math.floor((lonDeg + 180) / 360);
     }
 
-    /** The panorama pixel (row-major index) a ray falls on; −1 above or below the panorama. */
+    /** {@link #pixelOf} of a ray above the panorama's top row, and below its bottom row. */
+    private static final int ABOVE = -1, BELOW = -2;
+
+    /** The panorama pixel (row-major index) a ray falls on; {@link #ABOVE} or {@link #BELOW} outside the panorama. */
     private static int pixelOf(Panorama ref, double[] ray) {
         double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
         double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
         PanoramaGeometry g = ref.geometry();
         int c = Math.floorMod((int) Math.floor(g.columnOf(az)), g.widthPx());
         int r = (int) Math.floor(g.rowOf(el));
-        return r < 0 || r >= g.heightPx() ? -1 : r * g.widthPx() + c;
+        return r < 0 ? ABOVE : r >= g.heightPx() ? BELOW : r * g.widthPx() + c;
     }
 
+    /** The distance a ray sees: +∞ above the panorama (sky), 0 below it (the ground at the camera's feet). */
     private static double sample(Panorama ref, double[] ray) {
-        double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
-        double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
-        PanoramaGeometry g = ref.geometry();
-        int c = Math.floorMod((int) Math.floor(g.columnOf(az)), g.widthPx());
-        int r = (int) Math.floor(g.rowOf(el));
-        if (r < 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        return r >= g.heightPx() ? 0 : ref.distanceMetres(c, r);
+        int k = pixelOf(ref, ray);
+        return k == ABOVE ? Double.POSITIVE_INFINITY : k == BELOW ? 0 : ref.distanceMetres(k % ref.widthPx(), k / ref.widthPx());
     }
 
     /**
