@@ -2,6 +2,7 @@ package dempano.orient;
 
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
+import dempano.util.Floors;
 
 /**
  * The skyline of a 360° panorama as a function of azimuth: per column, the elevation of the boundary between
@@ -120,7 +121,9 @@ public final class HorizonProfile {
     /** Skyline elevation at any azimuth (degrees, any wrapping), linear between column centres; NaN if unknown. */
     public double elevationDeg(double azimuthDeg) {
         double x = azimuthDeg * pixelsPerDegree - 0.5;
-        double fl = Math.floor(x);
+        // Floors.floorInt, not Math.floor, which the client compiler (the start script's) calls: the coarse search asks
+        // this some 20 million times a photo. The same values wherever the int range holds the column.
+        double fl = Math.abs(x) < 1e9 ? Floors.floorInt(x) : Math.floor(x);
         int c0 = (int) fl;
         double t = x - fl;
         int n = elevationDeg.length;
