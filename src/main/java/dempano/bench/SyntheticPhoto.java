@@ -190,16 +190,12 @@ final class SyntheticPhoto {
         double m = MISSING_DATA_MARGIN_DEG;
         for (double dLat = -m; dLat <= m; dLat += m) {
             for (double dLon = -m; dLon <= m; dLon += m) {
-                if (!present.test(TileId.containing(latDeg + dLat, wrap180(lonDeg + dLon)))) {
+                if (!present.test(TileId.containing(latDeg + dLat, lonDeg + dLon))) { // (containing wraps the longitude)
                     return true;
                 }
             }
         }
         return false;
-    }
-
-    private static double wrap180(double lonDeg) {
-        return lonDeg - 360 * Math.floor((lonDeg + 180) / 360);
     }
 
     /** {@link #pixelOf} of a ray above the panorama's top row, and below its bottom row. */

@@ -496,16 +496,18 @@ public final class OrientationEstimator {
                 double threshold = 3 * tDeg;
                 // A robust start: per start roll, the median offset as pitch (a third of the skyline hidden moves it
                 // little); the start with the lowest truncated score at the first threshold wins, both taken on every
-                // second sample (enough to rank the starts, at half the cost). One start at roll 0 missed rolled photos
-                // with occluders: their edges lay beyond that threshold, and the fit below never saw them.
+                // second sample (enough to rank the starts, at half the cost; a single start, with the roll pinned, takes
+                // every sample). One start at roll 0 missed rolled photos with occluders: their edges lay beyond that
+                // threshold, and the fit below never saw them.
                 int starts = rollFree ? 2 * (int) Math.floor(priors.rollLimitDeg() / ROLL_START_STEP_DEG) + 1 : 1;
+                int stride = starts == 1 ? 1 : 2;
                 double startScore = Double.POSITIVE_INFINITY, startPitch = pitch, startB = b;
                 for (int st = 0; st < starts; st++) {
                     double b0 = rollFree ? (st - starts / 2) * ROLL_START_STEP_DEG : b;
                     double p0 = pitch;
                     if (pitchFree) {
                         int m = 0;
-                        for (int i = 0; i < n; i += 2) {
+                        for (int i = 0; i < n; i += stride) {
                             double v = r[i] - b0 * sinA[i];
                             if (!Double.isNaN(v)) {
                                 work[m++] = v;
@@ -518,7 +520,7 @@ public final class OrientationEstimator {
                         break;
                     }
                     double sc = 0;
-                    for (int i = 0; i < n; i += 2) {
+                    for (int i = 0; i < n; i += stride) {
                         double res = Math.abs(r[i] - p0 * cosA[i] - b0 * sinA[i]);
                         sc += s.w()[i] * (res < threshold ? res / threshold : 1);
                     }

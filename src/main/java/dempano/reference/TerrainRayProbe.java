@@ -636,7 +636,7 @@ public final class TerrainRayProbe implements RayProbe {
         double nRadius = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat);
         double height = p * cosLat + z * sinLat - Ellipsoid.A_METRES * Ellipsoid.A_METRES / nRadius;
         // Latitude and longitude as angles from the eye's (atan2's fdlibm call is native in JDK 17, and this
-        // runs a dozen times per probed pixel): within a few 1e-16 rad of atan2, SmallAnglesTest.
+        // runs a dozen times per probed pixel): within 1e-15 rad of atan2, SmallAnglesTest.
         double latDeg = eyeLatDeg + Math.toDegrees(SmallAngles.angleFrom(num, den, eyeCosLat, eyeSinLat));
         double lonDeg = eyeLonDeg + Math.toDegrees(SmallAngles.angleFrom(y, x, eyeCosLon, eyeSinLon));
         if (lonDeg > 180) {

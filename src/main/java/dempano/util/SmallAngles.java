@@ -18,8 +18,11 @@ public final class SmallAngles {
      * else {@link Math#atan}. NaN stays NaN, −0 stays −0.
      */
     public static double atan(double x) {
-        if (!(Math.abs(x) < SERIES_LIMIT) || x == 0) {
-            return x == 0 ? x : Math.atan(x); // x == 0: keeps −0
+        if (x == 0) {
+            return x; // keeps −0 (the series would give +0)
+        }
+        if (!(Math.abs(x) < SERIES_LIMIT)) {
+            return Math.atan(x);
         }
         double x2 = x * x;
         // atan x = x (1 − x²/3 + x⁴/5 − x⁶/7 + x⁸/9 − x¹⁰/11 + x¹²/13), Horner from the smallest term
