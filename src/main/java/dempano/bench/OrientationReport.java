@@ -92,7 +92,10 @@ public final class OrientationReport {
             Levenberg–Marquardt refinement of heading, pitch, roll and FOV with the exact camera model on the skyline
             and a chamfer match of the inner edges, which settles skylines that fit several headings. The estimate
             and its confidence go to `P-orientation.json` and the log (`P.json`'s provenance); `P-orientation.png`
-            draws the rendered skyline (red) over the skyline found in the photo (yellow). Flags pin values
+            draws the rendered skyline (red) over the skyline found in the photo (yellow). A photo larger than the
+            benchmark's 480 × 320 px is matched scaled down to the smallest size that still covers that (BoofCV's area
+            averaging; `MatchImage`), where the fit's pixel thresholds and the UNSURE rule were calibrated; the residual is
+            reported in the photo's own pixels. Flags pin values
             (`--heading-deg`, `--pitch-deg`, `--roll-deg`, `--hfov-deg`); `--heading-range-deg R` turns a given
             heading (e.g. an EXIF compass good to 10–20°) into a prior searched within ± R. The render of the photo's
             own view, its distances and summits then use the estimate. Measured accuracy: see the table below

@@ -4,7 +4,9 @@ package dempano.orient;
  * Where a photo's camera pointed, as found by matching its skyline, and how sure the match is.
  *
  * <p>Confidence: the residuals are the differences, in photo pixels, between the photo's skyline and the rendered
- * skyline projected with the estimate (one per sampled photo column). {@code score} is their mean truncated
+ * skyline projected with the estimate (one per sampled photo column). The truncations and the scores are those of
+ * the image matched in: a large photo is matched scaled down ({@link MatchImage}), and its residual then scaled back
+ * ({@link #withResidualScaled}). {@code score} is their mean truncated
  * absolute value divided by the truncation {@link OrientationEstimator#TRUNCATION_PX} (0 = every sample on the
  * rendered skyline, 1 = none within the truncation). {@code marginScore} is the score of the best other heading
  * (a separately refined local optimum more than {@link OrientationEstimator#DISTINCT_HEADING_DEG} away) minus
@@ -53,6 +55,16 @@ public record OrientationEstimate(double headingDeg, double pitchDeg, double rol
     /** The best other heading, degrees; NaN when there was none. */
     public double secondHeadingDeg() {
         return second == null ? Double.NaN : second.headingDeg();
+    }
+
+    /**
+     * The same estimate with the residual multiplied by {@code photoRowsPerRow}: from the pixels of the image matched
+     * in to those of the photo it was scaled from ({@link MatchImage#scale()}). Everything else is unitless or in
+     * degrees.
+     */
+    public OrientationEstimate withResidualScaled(double photoRowsPerRow) {
+        return new OrientationEstimate(headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx * photoRowsPerRow, inlierShare,
+                score, edgeScore, second, marginScore, unsure, samples, seconds);
     }
 
     /** One line for a log. */

@@ -76,7 +76,7 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
 
     /**
      * The estimate: renders the 360° panorama at the settings' position (distances only, {@link #PANORAMA_PPD}),
-     * finds the photo's skyline and matches it.
+     * and {@linkplain #match matches} the photo against it.
      *
      * @param known the camera's resolved values for what is not open: heading (centre of the prior when
      *              {@code headingRangeDeg} is given), pitch, roll, horizontal FOV, degrees
@@ -85,8 +85,6 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
                            double headingRangeDeg) {
         dempano.panorama.Panorama pano = renderer.render(settings.withPixelsPerDegree(PANORAMA_PPD)
                 .withElevationRange(new ElevationRange(-30, 45, false)).withColour(false).withExactDistances(false));
-        HorizonProfile profile = HorizonProfile.of(pano);
-        Skyline sky = SkylineExtractor.extract(photo);
         OrientationPriors priors = OrientationPriors.NONE;
         if (!heading) {
             priors = priors.withHeading(known[0], 0);
@@ -96,9 +94,23 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         priors = pitch ? priors : priors.withPitchDeg(known[1]);
         priors = roll ? priors : priors.withRollDeg(known[2]);
         priors = hfov ? priors : priors.withHfovRangeDeg(known[3], known[3]);
-        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(photo, sky), profile,
-                SilhouetteField.of(pano), priors);
-        return new Result(e, OrientationOverlay.draw(photo, sky, profile, e));
+        return match(photo, HorizonProfile.of(pano), SilhouetteField.of(pano), priors);
+    }
+
+    /**
+     * Finds the photo's skyline and inner edges and matches them against a panorama's skyline profile and depth
+     * edges, in the photo {@linkplain MatchImage scaled down} to about the benchmark's size. No GL.
+     *
+     * @param field the panorama's depth edges; null to match the skyline only
+     * @return the estimate, its residual in the photo's own pixels, and the overlay drawn on the matched image
+     */
+    public static Result match(BufferedImage photo, HorizonProfile profile, SilhouetteField field, OrientationPriors priors) {
+        MatchImage m = MatchImage.of(photo);
+        Skyline sky = SkylineExtractor.extract(m.image());
+        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(m.image(), sky), profile, field,
+                priors).withResidualScaled(m.scale());
+        return new Result(e, OrientationOverlay.draw(m.image(), sky, profile, e), m.image().getWidth(),
+                m.image().getHeight());
     }
 
     /**
@@ -116,15 +128,23 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         };
     }
 
-    /** An estimate and its overlay (rendered skyline in red over the photo's skyline in yellow). */
-    public record Result(OrientationEstimate estimate, BufferedImage overlay) {
+    /**
+     * An estimate and its overlay (rendered skyline in red over the photo's skyline in yellow).
+     *
+     * @param estimate       the estimate; its residual in the photo's own pixels
+     * @param overlay        drawn on the image matched in (the photo, or the photo scaled down to it)
+     * @param matchedWidthPx width of the image matched in, pixels
+     * @param matchedHeightPx its height, pixels
+     */
+    public record Result(OrientationEstimate estimate, BufferedImage overlay, int matchedWidthPx, int matchedHeightPx) {
         /** The provenance line of the estimate. */
         public String provenance(PhotoOrientation open) {
             OrientationEstimate e = estimate;
-            return String.format(Locale.ROOT, "%s estimated from the skyline: %s (confidence: residual in photo"
-                    + " pixels; margin = score of the best other heading minus the best score, below %.2f or fewer than"
-                    + " %.0f %% of samples fitting is flagged UNSURE)", String.join(", ", open.names()), e.summary(),
-                    OrientationEstimator.UNSURE_MARGIN, 100 * OrientationEstimator.UNSURE_INLIER_SHARE);
+            return String.format(Locale.ROOT, "%s estimated from the skyline: %s (matched in %d × %d px; confidence:"
+                    + " residual in photo pixels; margin = score of the best other heading minus the best score, below"
+                    + " %.2f or fewer than %.0f %% of samples fitting is flagged UNSURE)", String.join(", ", open.names()),
+                    e.summary(), matchedWidthPx, matchedHeightPx, OrientationEstimator.UNSURE_MARGIN,
+                    100 * OrientationEstimator.UNSURE_INLIER_SHARE);
         }
     }
 }

@@ -181,8 +181,11 @@ public final class PhotoJob {
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
             orientationOverlay = est.overlay();
-            orientationJson = new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues().create()
-                    .toJson(est.estimate());
+            com.google.gson.Gson gson = new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues().create();
+            com.google.gson.JsonObject json = gson.toJsonTree(est.estimate()).getAsJsonObject();
+            json.addProperty("matchedWidthPx", est.matchedWidthPx()); // the image matched in (MatchImage)
+            json.addProperty("matchedHeightPx", est.matchedHeightPx());
+            orientationJson = gson.toJson(json);
         }
         CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
         List<SummitSighting> sightings = in.summits() == null ? null : SummitProjector.project(rendered, in.summits());
