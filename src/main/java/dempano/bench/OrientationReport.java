@@ -95,7 +95,8 @@ public final class OrientationReport {
             draws the rendered skyline (red) over the skyline found in the photo (yellow). A photo larger than the
             benchmark's 480 × 320 px is matched scaled down to the smallest size that still covers that (BoofCV's area
             averaging; `MatchImage`), where the fit's pixel thresholds and the UNSURE rule were calibrated; the residual is
-            reported in the photo's own pixels. Flags pin values
+            reported in the photo's own pixels. A known lens (distortion, principal point, pixel aspect) is matched with,
+            each sample's own ray through it. Flags pin values
             (`--heading-deg`, `--pitch-deg`, `--roll-deg`, `--hfov-deg`); `--heading-range-deg R` turns a given
             heading (e.g. an EXIF compass good to 10–20°) into a prior searched within ± R. The render of the photo's
             own view, its distances and summits then use the estimate. Measured accuracy: see the table below

@@ -23,6 +23,10 @@ import java.util.List;
  *   gives the margin (see {@link OrientationEstimate}).</li>
  * </ol>
  *
+ * With a lens in the priors ({@link OrientationPriors#lens()}: principal point, pixel aspect, distortion), both
+ * stages take each sample's own ray through it (distortion undone by {@link CameraIntrinsics#rayOf}); without, a
+ * centred pinhole camera.
+ *
  * Stateless; no rendering.
  */
 public final class OrientationEstimator {
@@ -155,7 +159,7 @@ public final class OrientationEstimator {
      * What is matched: skyline samples, and optionally photo edge points against a silhouette field, each edge
      * point weighted {@code edgeW}.
      */
-    record Target(Samples sky, PhotoEdges edges, SilhouetteField field, double edgeW) {
+    record Target(Samples sky, PhotoEdges edges, SilhouetteField field, double edgeW, CameraIntrinsics lens) {
         boolean hasEdges() {
             return field != null && edges.size() >= MIN_EDGE_POINTS;
         }
@@ -220,7 +224,8 @@ public final class OrientationEstimator {
         for (double v : fine.w()) {
             skyW += v;
         }
-        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size());
+        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size(),
+                priors.lens());
         int nCand = target.hasEdges() ? CANDIDATES_WITH_EDGES : CANDIDATES;
         List<Hypothesis> candidates = priors.headingPinned()
                 ? List.of(new Hypothesis(priors.headingDeg(), orZero(priors.pitchDeg()), orZero(priors.rollDeg()),
@@ -270,7 +275,7 @@ public final class OrientationEstimator {
             }
         }
         profile = bestProfile;
-        double[] res = residualsPx(best, fine, w, h, profile);
+        double[] res = residualsPx(best, fine, w, h, profile, priors.lens());
         double sw = 0, inW = 0, sq = 0;
         for (int i = 0; i < res.length; i++) {
             sw += fine.w()[i];
@@ -317,7 +322,7 @@ public final class OrientationEstimator {
         for (double v : fine.w()) {
             skyW += v;
         }
-        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size());
+        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size(), null);
         Hypothesis hyp = refine(new Hypothesis(start.headingDeg(), start.pitchDeg(), start.rollDeg(), hfovDeg, Double.NaN),
                 target, w, h, profile, OrientationPriors.NONE);
         if (camera != null) {
@@ -470,17 +475,25 @@ public final class OrientationEstimator {
         int n = s.size();
         double cx = CameraIntrinsics.centre(w), cy = CameraIntrinsics.centre(h);
         double[] alpha = new double[n], el = new double[n], cosA = new double[n], sinA = new double[n], r = new double[n],
-                work = new double[n];
+                work = new double[n], ray = new double[3];
         boolean pitchFree = Double.isNaN(priors.pitchDeg()), rollFree = Double.isNaN(priors.rollDeg());
         for (int k = 0; k < nf; k++) {
             double fov = nf == 1 ? Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg())
                     : Math.min(priors.hfovMaxDeg(), priors.hfovMinDeg() * Math.pow(1 + COARSE_FOV_STEP, k));
             double f = w / 2.0 / Math.tan(Math.toRadians(fov) / 2);
+            CameraIntrinsics lens = priors.lens() == null ? null : intrinsics(w, h, fov, priors.lens());
             for (int i = 0; i < n; i++) {
                 double u = s.x()[i] - cx, v = cy - s.y()[i];
-                double a = Math.atan(u / f);
+                double a = Math.atan(u / f), e = Math.atan2(v, Math.hypot(f, u));
+                if (lens != null) { // the sample's own ray (camera frame: x right, y down, z forward)
+                    lens.rayOf(s.x()[i], s.y()[i], ray);
+                    if (ray[2] > 0) { // (none beyond the fold of a strong distortion: the pinhole's is kept)
+                        a = Math.atan2(ray[0], ray[2]);
+                        e = Math.atan2(-ray[1], Math.hypot(ray[0], ray[2]));
+                    }
+                }
                 alpha[i] = Math.toDegrees(a);
-                el[i] = Math.toDegrees(Math.atan2(v, Math.hypot(f, u)));
+                el[i] = Math.toDegrees(e);
                 cosA[i] = Math.cos(a);
                 sinA[i] = Math.sin(a);
             }
@@ -744,11 +757,24 @@ public final class OrientationEstimator {
     }
 
     /**
+     * The camera of a field of view: fx = (w / 2) / tan(hfov / 2); with a {@code lens} (see
+     * {@link OrientationPriors#lens()}) fy in its proportion and its principal point and distortion, else square
+     * pixels, the principal point at the centre and no distortion.
+     */
+    public static CameraIntrinsics intrinsics(int w, int h, double hfovDeg, CameraIntrinsics lens) {
+        if (lens == null) {
+            return CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg);
+        }
+        double fx = w / 2.0 / Math.tan(Math.toRadians(hfovDeg) / 2);
+        return new CameraIntrinsics(w, h, fx, fx * lens.fyPx() / lens.fxPx(), lens.cxPx(), lens.cyPx(), lens.distortion());
+    }
+
+    /**
      * Per sample, the photo's skyline minus the rendered skyline along the elevation, in photo pixels (NaN where
      * the rendered skyline is unknown), for a hypothesis.
      */
-    static double[] residualsPx(Hypothesis hyp, Samples s, int w, int h, HorizonProfile profile) {
-        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(w, h, hyp.hfovDeg());
+    static double[] residualsPx(Hypothesis hyp, Samples s, int w, int h, HorizonProfile profile, CameraIntrinsics lens) {
+        CameraIntrinsics k = intrinsics(w, h, hyp.hfovDeg(), lens);
         CameraView view = new CameraView(k, new CameraOrientation(hyp.headingDeg(),
                 Math.max(-90, Math.min(90, hyp.pitchDeg())), hyp.rollDeg()));
         double pxPerRad = k.fxPx();
@@ -764,19 +790,19 @@ public final class OrientationEstimator {
     }
 
     /**
-     * The skyline residuals ({@link #residualsPx(Hypothesis, Samples, int, int, HorizonProfile)}) followed, when
+     * The skyline residuals ({@link #residualsPx(Hypothesis, Samples, int, int, HorizonProfile, CameraIntrinsics)}) followed, when
      * the target has edges, by one per photo edge point: its distance to the nearest rendered depth edge, in photo
      * pixels, scaled so that {@link #TRUNCATION_PX} stands for the larger of 3 photo pixels and 1.5 panorama pixels
      * (the rendered edges are no sharper than the panorama's pixels).
      */
     static double[] residualsPx(Hypothesis hyp, Target t, int w, int h, HorizonProfile profile) {
-        double[] sky = residualsPx(hyp, t.sky(), w, h, profile);
+        double[] sky = residualsPx(hyp, t.sky(), w, h, profile, t.lens());
         if (!t.hasEdges()) {
             return sky;
         }
         PhotoEdges e = t.edges();
         double[] out = java.util.Arrays.copyOf(sky, sky.length + e.size());
-        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(w, h, hyp.hfovDeg());
+        CameraIntrinsics k = intrinsics(w, h, hyp.hfovDeg(), t.lens());
         CameraView view = new CameraView(k, new CameraOrientation(hyp.headingDeg(),
                 Math.max(-90, Math.min(90, hyp.pitchDeg())), hyp.rollDeg()));
         double pxPerDeg = Math.toRadians(k.fxPx());

@@ -20,8 +20,9 @@ public final class OrientationOverlay {
     }
 
     /** The rendered skyline projected into the photo with a pose, over the azimuths the photo spans. */
-    static Path2D.Double skylinePath(HorizonProfile profile, OrientationEstimate.Pose pose, int w, int h) {
-        CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, pose.hfovDeg()),
+    static Path2D.Double skylinePath(HorizonProfile profile, OrientationEstimate.Pose pose, int w, int h,
+                                     CameraIntrinsics lens) {
+        CameraView view = new CameraView(OrientationEstimator.intrinsics(w, h, pose.hfovDeg(), lens),
                 new CameraOrientation(pose.headingDeg(), Math.max(-90, Math.min(90, pose.pitchDeg())), pose.rollDeg()));
         // Walk the rendered skyline over the azimuths the photo spans (with a margin for roll).
         double half = pose.hfovDeg() / 2 + 10;
@@ -45,6 +46,12 @@ public final class OrientationOverlay {
     }
 
     public static BufferedImage draw(BufferedImage photo, Skyline sky, HorizonProfile profile, OrientationEstimate e) {
+        return draw(photo, sky, profile, e, null);
+    }
+
+    /** As {@link #draw(BufferedImage, Skyline, HorizonProfile, OrientationEstimate)} for a camera of this shape ({@link OrientationPriors#lens()}). */
+    public static BufferedImage draw(BufferedImage photo, Skyline sky, HorizonProfile profile, OrientationEstimate e,
+                                     CameraIntrinsics lens) {
         int w = photo.getWidth(), h = photo.getHeight();
         BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = out.createGraphics();
@@ -60,11 +67,11 @@ public final class OrientationOverlay {
             // An ambiguous match: the best other heading's skyline too (cyan, dashed), to see what it is confused with.
             g.setColor(new Color(0, 220, 255));
             g.setStroke(new BasicStroke(1.2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 1, new float[] {5, 4}, 0));
-            g.draw(skylinePath(profile, e.second(), w, h));
+            g.draw(skylinePath(profile, e.second(), w, h, lens));
         }
         g.setColor(new Color(255, 40, 40));
         g.setStroke(new BasicStroke(1.5f));
-        g.draw(skylinePath(profile, e.pose(), w, h));
+        g.draw(skylinePath(profile, e.pose(), w, h, lens));
         g.setColor(new Color(0, 0, 0, 150));
         g.fillRect(0, h - 18, w, 18);
         g.setColor(e.unsure() ? Color.ORANGE : Color.WHITE);

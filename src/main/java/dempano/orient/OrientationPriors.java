@@ -1,7 +1,9 @@
 package dempano.orient;
 
+import dempano.camera.CameraIntrinsics;
+
 /**
- * What is known before matching: each angle either pinned (a number) or free within bounds.
+ * What is known before matching: each angle either pinned (a number) or free within bounds, and the lens.
  *
  * @param headingDeg       centre of the heading prior, degrees clockwise from true north; NaN = any heading
  * @param headingRangeDeg  the heading lies within ± this of {@code headingDeg}, degrees, (0, 180]; ignored when
@@ -12,12 +14,18 @@ package dempano.orient;
  * @param hfovMaxDeg       largest, degrees, ≥ min (equal = pinned)
  * @param pitchLimitDeg    bound on a free pitch, degrees, (0, 60]
  * @param rollLimitDeg     bound on a free roll, degrees, (0, 45]
+ * @param lens             the camera's known shape, at the size of the image matched in: principal point, pixel aspect (fy / fx) and
+ *                         lens distortion; its focal length is not used: each field of view tried sets fx =
+ *                         (w / 2) / tan(hfov / 2), fy in proportion (so a field of view here, as {@code --hfov-deg}
+ *                         with {@code --distortion}, is that of the undistorted image). Null: a distortion-free
+ *                         camera with square pixels and the principal point at the image centre
  */
 public record OrientationPriors(double headingDeg, double headingRangeDeg, double pitchDeg, double rollDeg,
-                                double hfovMinDeg, double hfovMaxDeg, double pitchLimitDeg, double rollLimitDeg) {
-    /** Default bounds: pitch ± 15°, roll ± 8°, horizontal FOV 15°–100°. */
+                                double hfovMinDeg, double hfovMaxDeg, double pitchLimitDeg, double rollLimitDeg,
+                                CameraIntrinsics lens) {
+    /** Default bounds: pitch ± 15°, roll ± 8°, horizontal FOV 15°–100°; a centred pinhole camera. */
     public static final OrientationPriors NONE = new OrientationPriors(Double.NaN, 180, Double.NaN, Double.NaN,
-            15, 100, 15, 8);
+            15, 100, 15, 8, null);
 
     public OrientationPriors {
         if (!Double.isNaN(headingDeg) && !(Double.isFinite(headingDeg) && headingRangeDeg >= 0 && headingRangeDeg <= 180)) {
@@ -39,19 +47,25 @@ public record OrientationPriors(double headingDeg, double headingRangeDeg, doubl
     }
 
     public OrientationPriors withHeading(double centreDeg, double rangeDeg) {
-        return new OrientationPriors(centreDeg, rangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg);
+        return new OrientationPriors(centreDeg, rangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
     }
 
     public OrientationPriors withPitchDeg(double v) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, v, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg);
+        return new OrientationPriors(headingDeg, headingRangeDeg, v, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
     }
 
     public OrientationPriors withRollDeg(double v) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, v, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg);
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, v, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
     }
 
     public OrientationPriors withHfovRangeDeg(double min, double max) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, min, max, pitchLimitDeg, rollLimitDeg);
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, min, max, pitchLimitDeg, rollLimitDeg, lens);
+    }
+
+    /** The same priors for a camera of this shape (see {@code lens}); null for a centred pinhole camera. */
+    public OrientationPriors withLens(CameraIntrinsics v) {
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg,
+                rollLimitDeg, v);
     }
 
     boolean headingPinned() {

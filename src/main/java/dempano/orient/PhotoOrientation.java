@@ -2,6 +2,7 @@ package dempano.orient;
 
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
+import dempano.camera.CameraIntrinsics;
 import dempano.camera.PhotoMetadata;
 import dempano.camera.PhotoOverrides;
 import dempano.panorama.ElevationRange;
@@ -78,39 +79,66 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      * The estimate: renders the 360° panorama at the settings' position (distances only, {@link #PANORAMA_PPD}),
      * and {@linkplain #match matches} the photo against it.
      *
-     * @param known the camera's resolved values for what is not open: heading (centre of the prior when
-     *              {@code headingRangeDeg} is given), pitch, roll, horizontal FOV, degrees
+     * @param camera the camera as resolved so far: what is not open is taken from it (its heading is the centre of
+     *               the prior when {@code headingRangeDeg} is given), and its lens (principal point, pixel aspect,
+     *               distortion) is matched with; its field of view counts as that of the undistorted image,
+     *               (w / 2) / tan(hfov / 2) = fx, as {@code --hfov-deg} does
      */
-    public Result estimate(PanoramaRenderer renderer, PanoramaRequest settings, BufferedImage photo, double[] known,
-                           double headingRangeDeg) {
+    public Result estimate(PanoramaRenderer renderer, PanoramaRequest settings, BufferedImage photo,
+                           dempano.camera.PhotoCamera camera, double headingRangeDeg) {
         dempano.panorama.Panorama pano = renderer.render(settings.withPixelsPerDegree(PANORAMA_PPD)
                 .withElevationRange(new ElevationRange(-30, 45, false)).withColour(false).withExactDistances(false));
-        OrientationPriors priors = OrientationPriors.NONE;
+        dempano.camera.CameraOrientation k = camera.pose().orientation();
+        CameraIntrinsics lens = camera.intrinsics();
+        OrientationPriors priors = OrientationPriors.NONE.withLens(isCentredPinhole(lens) ? null : lens);
         if (!heading) {
-            priors = priors.withHeading(known[0], 0);
+            priors = priors.withHeading(k.headingDeg(), 0);
         } else if (!Double.isNaN(headingRangeDeg)) {
-            priors = priors.withHeading(known[0], headingRangeDeg);
+            priors = priors.withHeading(k.headingDeg(), headingRangeDeg);
         }
-        priors = pitch ? priors : priors.withPitchDeg(known[1]);
-        priors = roll ? priors : priors.withRollDeg(known[2]);
-        priors = hfov ? priors : priors.withHfovRangeDeg(known[3], known[3]);
+        priors = pitch ? priors : priors.withPitchDeg(k.pitchDeg());
+        priors = roll ? priors : priors.withRollDeg(k.rollDeg());
+        if (!hfov) {
+            double fov = Math.toDegrees(2 * Math.atan(lens.widthPx() / 2.0 / lens.fxPx()));
+            priors = priors.withHfovRangeDeg(fov, fov);
+        }
         return match(photo, HorizonProfile.of(pano), SilhouetteField.of(pano), priors);
+    }
+
+    /** Whether a camera is the estimator's default: no distortion, square pixels, the principal point at the centre. */
+    static boolean isCentredPinhole(CameraIntrinsics k) {
+        return k.distortion().isNone() && k.fxPx() == k.fyPx() && k.cxPx() == CameraIntrinsics.centre(k.widthPx())
+                && k.cyPx() == CameraIntrinsics.centre(k.heightPx());
     }
 
     /**
      * Finds the photo's skyline and inner edges and matches them against a panorama's skyline profile and depth
-     * edges, in the photo {@linkplain MatchImage scaled down} to about the benchmark's size. No GL.
+     * edges, in the photo {@linkplain MatchImage scaled down} to about the benchmark's size (its lens, if the priors
+     * have one at the photo's size, scaled with it). No GL.
      *
      * @param field the panorama's depth edges; null to match the skyline only
      * @return the estimate, its residual in the photo's own pixels, and the overlay drawn on the matched image
      */
     public static Result match(BufferedImage photo, HorizonProfile profile, SilhouetteField field, OrientationPriors priors) {
         MatchImage m = MatchImage.of(photo);
-        Skyline sky = SkylineExtractor.extract(m.image());
-        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(m.image(), sky), profile, field,
-                priors).withResidualScaled(m.scale());
-        return new Result(e, OrientationOverlay.draw(m.image(), sky, profile, e), m.image().getWidth(),
+        CameraIntrinsics lens = priors.lens() == null ? null : scaled(priors.lens(), m.image().getWidth(),
                 m.image().getHeight());
+        OrientationPriors p = priors.withLens(lens);
+        Skyline sky = SkylineExtractor.extract(m.image());
+        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(m.image(), sky), profile, field, p)
+                .withResidualScaled(m.scale());
+        return new Result(e, OrientationOverlay.draw(m.image(), sky, profile, e, lens), m.image().getWidth(),
+                m.image().getHeight());
+    }
+
+    /** A camera's intrinsics for the same image resampled to {@code w × h} (OpenCV convention: pixel centres at integers). */
+    static CameraIntrinsics scaled(CameraIntrinsics k, int w, int h) {
+        if (w == k.widthPx() && h == k.heightPx()) {
+            return k;
+        }
+        double sx = (double) k.widthPx() / w, sy = (double) k.heightPx() / h;
+        return new CameraIntrinsics(w, h, k.fxPx() / sx, k.fyPx() / sy, (k.cxPx() + 0.5) / sx - 0.5,
+                (k.cyPx() + 0.5) / sy - 0.5, k.distortion());
     }
 
     /**

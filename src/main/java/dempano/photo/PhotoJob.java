@@ -5,7 +5,6 @@ import dempano.CameraImage;
 import dempano.CameraRequest;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
-import dempano.camera.CameraOrientation;
 import dempano.camera.PhotoCamera;
 import dempano.camera.PhotoMetadata;
 import dempano.camera.PhotoMetadataException;
@@ -158,13 +157,12 @@ public final class PhotoJob {
         BufferedImage orientationOverlay = null;
         String orientationJson = null;
         if (open.any()) {
-            CameraOrientation k = camera.pose().orientation();
             PhotoOrientation.Result est;
             try {
                 est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
                                 .withAltitudeMetres(camera.pose().altitudeMetres())
                                 .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                        photo, new double[] {k.headingDeg(), k.pitchDeg(), k.rollDeg(), camera.intrinsics().horizontalFovDeg()},
+                        photo, camera,
                         // The range is a prior only around a heading that was given (override or metadata).
                         Double.isNaN(in.headingRangeDeg()) || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
                                 ? Double.NaN : in.headingRangeDeg());

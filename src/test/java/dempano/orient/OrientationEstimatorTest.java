@@ -268,7 +268,7 @@ class OrientationEstimatorTest {
         double truth = 217.3, pitch = 2, roll = -1, fov = 40;
         Skyline sky = SyntheticSkyline.project(OrientationEstimatorTest::rippled, W, H, new CameraOrientation(truth, pitch, roll), fov);
         OrientationEstimator.Samples fine = OrientationEstimator.Samples.of(sky, OrientationEstimator.FINE_SAMPLES);
-        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0);
+        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0, null);
         // Started one ripple period off, the refinement alone stays in that period's minimum (the precondition).
         OrientationEstimator.Hypothesis stuck = OrientationEstimator.refine(new OrientationEstimator.Hypothesis(
                 truth + 0.8, pitch, roll, fov, Double.NaN), target, W, H, profile, OrientationPriors.NONE);
@@ -284,7 +284,7 @@ class OrientationEstimatorTest {
         HorizonProfile profile = SyntheticSkyline.profile(OrientationEstimatorTest::rippled, 40);
         Skyline sky = SyntheticSkyline.project(OrientationEstimatorTest::rippled, W, H, new CameraOrientation(80, 0, 0), 30);
         OrientationEstimator.Samples fine = OrientationEstimator.Samples.of(sky, OrientationEstimator.FINE_SAMPLES);
-        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0);
+        OrientationEstimator.Target target = new OrientationEstimator.Target(fine, PhotoEdges.NONE, null, 0, null);
         for (double start : new double[]{80, 80.8, 83, 200}) {
             OrientationEstimator.Hypothesis r = OrientationEstimator.refine(new OrientationEstimator.Hypothesis(
                     start, 0, 0, 30, Double.NaN), target, W, H, profile, OrientationPriors.NONE);

@@ -64,7 +64,13 @@ final class SyntheticSkyline {
 
     /** The exact skyline row per column for a camera (bisection on the row), weight 1. */
     static Skyline project(DoubleUnaryOperator horizon, int w, int h, CameraOrientation o, double hfovDeg) {
-        CameraView view = new CameraView(CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
+        return project(horizon, CameraIntrinsics.fromHorizontalFov(w, h, hfovDeg), o);
+    }
+
+    /** The same for any camera (principal point, distortion), its image size {@code k}'s. */
+    static Skyline project(DoubleUnaryOperator horizon, CameraIntrinsics k, CameraOrientation o) {
+        int w = k.widthPx(), h = k.heightPx();
+        CameraView view = new CameraView(k, o);
         double[] rows = new double[w], weight = new double[w];
         double[] ray = new double[3];
         for (int x = 0; x < w; x++) {
@@ -73,7 +79,7 @@ final class SyntheticSkyline {
                 rows[x] = Double.NaN;
                 continue;
             }
-            for (int k = 0; k < 60; k++) {
+            for (int step = 0; step < 60; step++) {
                 double mid = (lo + hi) / 2;
                 if (above(view, horizon, x, mid, ray)) {
                     lo = mid;
