@@ -664,38 +664,53 @@ public final class OrientationEstimator {
         if (!free[2]) {
             p[2] = priors.rollDeg();
         }
-        double[] steps = {1e-3, 1e-3, 1e-3, 1e-3};
-        int n = s.size();
+        double[] lo = {Double.NEGATIVE_INFINITY, -priors.pitchLimitDeg() - 5, Double.NEGATIVE_INFINITY, fovLow(priors)};
+        double[] hi = {Double.POSITIVE_INFINITY, priors.pitchLimitDeg() + 5, Double.POSITIVE_INFINITY, fovHigh(priors)};
+        p = levenbergMarquardt(p, free, lo, hi, q -> residualsPx(hyp(q), s, w, h, profile), s);
+        double[] r = residualsPx(hyp(p), s, w, h, profile);
+        return new Hypothesis(normalize360(p[0]), p[1], p[2], p[3], score(r, s, TRUNCATION_PX));
+    }
+
+    /**
+     * Levenberg–Marquardt on the truncated squared residuals (truncation {@link #SCHEDULE_PX}, shrinking), forward
+     * differences of 1e-3 per parameter, each parameter kept within [lo, hi]; returns the parameters reached.
+     */
+    static double[] levenbergMarquardt(double[] start, boolean[] free, double[] lo, double[] hi,
+                                       java.util.function.Function<double[], double[]> residuals, Target s) {
+        int np = start.length, n = s.size();
+        double[] p = start.clone();
+        double[] steps = new double[np];
+        java.util.Arrays.fill(steps, 1e-3);
         for (double t : SCHEDULE_PX) {
             double lambda = 1e-3;
-            double[] r = residualsPx(hyp(p), s, w, h, profile);
+            double[] r = residuals.apply(p);
             double cost = truncatedCost(r, s, t);
             for (int iter = 0; iter < 25; iter++) {
-                double[][] jac = new double[4][];
-                for (int k = 0; k < 4; k++) {
+                double[][] jac = new double[np][];
+                for (int k = 0; k < np; k++) {
                     if (free[k]) {
                         double[] q = p.clone();
                         q[k] += steps[k];
-                        double[] rq = residualsPx(hyp(q), s, w, h, profile);
+                        double[] rq = residuals.apply(q);
                         jac[k] = new double[n];
                         for (int i = 0; i < n; i++) {
                             jac[k][i] = (rq[i] - r[i]) / steps[k];
                         }
                     }
                 }
-                double[][] a = new double[4][4];
-                double[] g = new double[4];
+                double[][] a = new double[np][np];
+                double[] g = new double[np];
                 for (int i = 0; i < n; i++) {
                     if (!(Math.abs(r[i]) < t)) {
                         continue;
                     }
                     double wi = s.weight(i);
-                    for (int k = 0; k < 4; k++) {
+                    for (int k = 0; k < np; k++) {
                         if (jac[k] == null || !Double.isFinite(jac[k][i])) {
                             continue;
                         }
                         g[k] += wi * jac[k][i] * r[i];
-                        for (int l = 0; l < 4; l++) {
+                        for (int l = 0; l < np; l++) {
                             if (jac[l] != null && Double.isFinite(jac[l][i])) {
                                 a[k][l] += wi * jac[k][i] * jac[l][i];
                             }
@@ -704,32 +719,31 @@ public final class OrientationEstimator {
                 }
                 boolean improved = false;
                 for (int attempt = 0; attempt < 8 && !improved; attempt++) {
-                    double[][] m = new double[4][4];
-                    for (int k = 0; k < 4; k++) {
-                        for (int l = 0; l < 4; l++) {
+                    double[][] m = new double[np][np];
+                    for (int k = 0; k < np; k++) {
+                        for (int l = 0; l < np; l++) {
                             m[k][l] = free[k] && free[l] ? a[k][l] : (k == l ? 1 : 0);
                         }
                         if (free[k]) {
                             m[k][k] += lambda * (a[k][k] + 1e-9);
                         }
                     }
-                    double[] rhs = new double[4];
-                    for (int k = 0; k < 4; k++) {
+                    double[] rhs = new double[np];
+                    for (int k = 0; k < np; k++) {
                         rhs[k] = free[k] ? -g[k] : 0;
                     }
                     double[] dp = solve(m, rhs);
                     double[] q = p.clone();
-                    for (int k = 0; k < 4; k++) {
+                    for (int k = 0; k < np; k++) {
                         q[k] += dp == null ? 0 : dp[k];
+                        q[k] = Math.max(lo[k], Math.min(hi[k], q[k]));
                     }
-                    q[1] = Math.max(-priors.pitchLimitDeg() - 5, Math.min(priors.pitchLimitDeg() + 5, q[1]));
-                    q[3] = Math.max(fovLow(priors), Math.min(fovHigh(priors), q[3]));
-                    double[] rq = residualsPx(hyp(q), s, w, h, profile);
+                    double[] rq = residuals.apply(q);
                     double cq = truncatedCost(rq, s, t);
                     if (cq < cost) {
                         improved = true;
                         double moved = 0;
-                        for (int k = 0; k < 4; k++) {
+                        for (int k = 0; k < np; k++) {
                             moved = Math.max(moved, Math.abs(q[k] - p[k]));
                         }
                         p = q;
@@ -748,8 +762,7 @@ public final class OrientationEstimator {
                 }
             }
         }
-        double[] r = residualsPx(hyp(p), s, w, h, profile);
-        return new Hypothesis(normalize360(p[0]), p[1], p[2], p[3], score(r, s, TRUNCATION_PX));
+        return p;
     }
 
     private static Hypothesis hyp(double[] p) {
