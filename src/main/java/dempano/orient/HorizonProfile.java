@@ -6,11 +6,14 @@ import dempano.util.Floors;
 
 /**
  * The skyline of a 360° panorama as a function of azimuth: per column, the elevation of the boundary between
- * the sky above and the first terrain below (the top edge of the column's topmost finite-distance pixel).
+ * the sky above and the first terrain below (the top edge of the column's topmost finite-distance pixel), and that
+ * pixel's distance (for the skyline seen from a higher or lower eye, {@link #raised}).
  * Pure arithmetic on the distance map; immutable.
  */
 public final class HorizonProfile {
     private final double[] elevationDeg;
+    /** Per column, the straight-line distance of the skyline's terrain from the eye, metres; NaN where unknown. */
+    private final double[] distanceMetres;
     private final double pixelsPerDegree;
 
     /**
@@ -19,12 +22,59 @@ public final class HorizonProfile {
      * @param pixelsPerDegree columns per degree of azimuth (length = 360·ppd)
      */
     public HorizonProfile(double[] elevationDeg, double pixelsPerDegree) {
+        this(elevationDeg, null, pixelsPerDegree);
+    }
+
+    /**
+     * @param distanceMetres per column, the distance of the skyline's terrain from the eye (straight line), metres,
+     *                       NaN where unknown; null = unknown everywhere (then {@link #raised} changes nothing)
+     */
+    public HorizonProfile(double[] elevationDeg, double[] distanceMetres, double pixelsPerDegree) {
         if (elevationDeg.length < 4 || Math.abs(elevationDeg.length - 360 * pixelsPerDegree) > 1e-6 * elevationDeg.length) {
             throw new IllegalArgumentException("a horizon profile needs 360·ppd columns, got " + elevationDeg.length
                     + " at " + pixelsPerDegree + " ppd");
         }
+        if (distanceMetres != null && distanceMetres.length != elevationDeg.length) {
+            throw new IllegalArgumentException("a distance per column is needed, got " + distanceMetres.length + " for "
+                    + elevationDeg.length + " columns");
+        }
         this.elevationDeg = elevationDeg.clone();
         this.pixelsPerDegree = pixelsPerDegree;
+        if (distanceMetres == null) {
+            this.distanceMetres = new double[elevationDeg.length];
+            java.util.Arrays.fill(this.distanceMetres, Double.NaN);
+        } else {
+            this.distanceMetres = distanceMetres.clone();
+        }
+    }
+
+    /** Whether any column knows its skyline's distance (what {@link #raised} needs). */
+    public boolean hasDistances() {
+        for (double d : distanceMetres) {
+            if (d > 0 && d < Double.POSITIVE_INFINITY) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The skyline seen from an eye {@code metres} higher (negative: lower), to first order in the shift of the
+     * skyline's terrain: each column's skyline point, at distance d and elevation e, is seen at
+     * atan2(d·sin e − Δh, d·cos e). The skyline terrain itself is taken as staying the same point (for a rounded
+     * crest the tangent point moves, but its elevation changes alike to first order). Columns whose distance is
+     * unknown keep their elevation.
+     */
+    public HorizonProfile raised(double metres) {
+        double[] el = elevationDeg.clone();
+        for (int c = 0; c < el.length; c++) {
+            double d = distanceMetres[c];
+            if (d > 0 && d < Double.POSITIVE_INFINITY && !Double.isNaN(el[c])) {
+                double e = Math.toRadians(el[c]);
+                el[c] = Math.toDegrees(Math.atan2(d * Math.sin(e) - metres, d * Math.cos(e)));
+            }
+        }
+        return new HorizonProfile(el, distanceMetres, pixelsPerDegree);
     }
 
     /** The skyline of a panorama's distance map (sky = +∞). */
@@ -35,17 +85,19 @@ public final class HorizonProfile {
     /** The skyline of a distance map (row-major, row 0 on top, sky +∞ or NaN) in a panorama layout. */
     public static HorizonProfile of(float[] distanceMetres, PanoramaGeometry geometry) {
         int w = geometry.widthPx(), h = geometry.heightPx();
-        double[] el = new double[w];
+        double[] el = new double[w], d = new double[w];
         for (int c = 0; c < w; c++) {
             el[c] = Double.NaN;
+            d[c] = Double.NaN;
             for (int r = 0; r < h; r++) {
                 if (Float.isFinite(distanceMetres[r * w + c])) {
                     el[c] = geometry.topElevationDeg() - r / geometry.pixelsPerDegree();
+                    d[c] = distanceMetres[r * w + c];
                     break;
                 }
             }
         }
-        return new HorizonProfile(el, geometry.pixelsPerDegree());
+        return new HorizonProfile(el, d, geometry.pixelsPerDegree());
     }
 
     /**

@@ -31,11 +31,20 @@ package dempano.orient;
  * @param unsure            whether the match should not be trusted (see above)
  * @param samples           skyline samples used
  * @param seconds           time spent matching (not rendering), seconds
+ * @param altitudeOffsetMetres how much higher the eye was than assumed, metres, as the skyline's distances tell it
+ *                          (a near ridge moves against a far one as the eye rises); NaN where not estimated: the
+ *                          altitude pinned, the estimate unsure, or the offset not constrained (its standard error
+ *                          above {@link OrientationEstimator#ALTITUDE_SIGMA_MAX_METRES}). When given, the pose and
+ *                          the residual, share and score are those of the pose fitted with it; the margin and the
+ *                          unsure flag still compare headings without it
+ * @param altitudeSigmaMetres the offset's standard error, metres (from the fit's residuals, at least
+ *                          {@link OrientationEstimator#ALTITUDE_RESIDUAL_FLOOR_PX} px each); NaN where not estimated
  */
 public record OrientationEstimate(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg,
                                   double residualPx, double inlierShare, double score, double edgeScore,
                                   Pose second,
-                                  double marginScore, boolean unsure, int samples, double seconds) {
+                                  double marginScore, boolean unsure, int samples, double seconds,
+                                  double altitudeOffsetMetres, double altitudeSigmaMetres) {
     /**
      * A camera pose as the estimator fits it.
      *
@@ -64,7 +73,7 @@ public record OrientationEstimate(double headingDeg, double pitchDeg, double rol
      */
     public OrientationEstimate withResidualScaled(double photoRowsPerRow) {
         return new OrientationEstimate(headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx * photoRowsPerRow, inlierShare,
-                score, edgeScore, second, marginScore, unsure, samples, seconds);
+                score, edgeScore, second, marginScore, unsure, samples, seconds, altitudeOffsetMetres, altitudeSigmaMetres);
     }
 
     /** One line for a log. */
@@ -72,6 +81,8 @@ public record OrientationEstimate(double headingDeg, double pitchDeg, double rol
         return String.format(java.util.Locale.ROOT, "heading %.2f°, pitch %.2f°, roll %.2f°, hfov %.2f°;"
                         + " residual %.2f px, %.0f %% of %d skyline samples fit, edge score %.3f, margin %.3f over heading %.1f°%s",
                 headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, edgeScore, marginScore,
-                secondHeadingDeg(), unsure ? " — UNSURE" : "");
+                secondHeadingDeg(), unsure ? " — UNSURE" : "") + (Double.isNaN(altitudeOffsetMetres) ? ""
+                : String.format(java.util.Locale.ROOT, "; eye %+.1f ± %.1f m from the altitude assumed", altitudeOffsetMetres,
+                altitudeSigmaMetres));
     }
 }

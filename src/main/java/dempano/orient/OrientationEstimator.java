@@ -160,6 +160,15 @@ public final class OrientationEstimator {
      * point weighted {@code edgeW}.
      */
     record Target(Samples sky, PhotoEdges edges, SilhouetteField field, double edgeW, CameraIntrinsics lens) {
+        /** The edges weighing {@link #EDGE_WEIGHT} of the skyline samples' weight in all. */
+        static Target of(Samples fine, PhotoEdges edges, SilhouetteField field, CameraIntrinsics lens) {
+            double skyW = 0;
+            for (double v : fine.w()) {
+                skyW += v;
+            }
+            return new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size(), lens);
+        }
+
         boolean hasEdges() {
             return field != null && edges.size() >= MIN_EDGE_POINTS;
         }
@@ -220,12 +229,7 @@ public final class OrientationEstimator {
                     + fine.size() + " columns with a sky/land edge; at least 20 are needed)");
         }
         int w = sky.widthPx(), h = sky.heightPx();
-        double skyW = 0;
-        for (double v : fine.w()) {
-            skyW += v;
-        }
-        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size(),
-                priors.lens());
+        Target target = Target.of(fine, edges, field, priors.lens());
         int nCand = target.hasEdges() ? CANDIDATES_WITH_EDGES : CANDIDATES;
         List<Hypothesis> candidates = priors.headingPinned()
                 ? List.of(new Hypothesis(priors.headingDeg(), orZero(priors.pitchDeg()), orZero(priors.rollDeg()),
@@ -275,34 +279,201 @@ public final class OrientationEstimator {
             }
         }
         profile = bestProfile;
-        double[] res = residualsPx(best, fine, w, h, profile, priors.lens());
-        double sw = 0, inW = 0, sq = 0;
-        for (int i = 0; i < res.length; i++) {
-            sw += fine.w()[i];
-            if (Math.abs(res[i]) < TRUNCATION_PX) {
-                inW += fine.w()[i];
-                sq += fine.w()[i] * res[i] * res[i];
-            }
-        }
-        double inlierShare = inW / sw;
-        double edgeScore = Double.NaN;
-        if (target.hasEdges()) {
-            double[] all = residualsPx(best, target, w, h, profile);
-            double c = 0;
-            for (int i = fine.size(); i < all.length; i++) {
-                double a = Math.abs(all[i]);
-                c += a < TRUNCATION_PX ? a / TRUNCATION_PX : 1;
-            }
-            edgeScore = c / (all.length - fine.size());
-        }
+        Fit fit = Fit.of(best, target, w, h, profile);
         double margin = second == null ? Double.NaN : second.score() - best.score();
-        boolean unsure = isUnsure(inlierShare, best.score(), second == null ? Double.NaN : margin)
+        boolean unsure = isUnsure(fit.inlierShare(), best.score(), second == null ? Double.NaN : margin)
                 || onFovBound(best.hfovDeg(), priors);
         return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
-                inW > 0 ? Math.sqrt(sq / inW) : Double.NaN, inlierShare, best.score(), edgeScore,
+                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(),
                 second == null ? null : new OrientationEstimate.Pose(normalize360(second.headingDeg()), second.pitchDeg(),
                         second.rollDeg(), second.hfovDeg()), margin, unsure, fine.size(),
-                (System.nanoTime() - t0) / 1e9);
+                (System.nanoTime() - t0) / 1e9, Double.NaN, Double.NaN);
+    }
+
+    /**
+     * What a pose is matched against: the panorama's skyline (with its distances) and depth edges (null: none).
+     */
+    public record Reference(HorizonProfile profile, SilhouetteField field) {
+    }
+
+    /** Renders the reference seen from an eye raised by a number of metres (negative: lowered) above the one assumed. */
+    @FunctionalInterface
+    public interface RaisedReference {
+        /** @throws IllegalArgumentException where the eye cannot be (below the DEM's surface): the refinement stops */
+        Reference at(double metres);
+    }
+
+    /** Altitude steps smaller than this end the iteration, metres. */
+    static final double ALTITUDE_STEP_METRES = 0.5;
+    /** Renders at most this many raised references per photo. */
+    public static final int ALTITUDE_RENDERS = 4;
+
+    /**
+     * The estimate refined with the eye's altitude: where the skyline's distances constrain it (a near ridge moves
+     * against a far one as the eye rises, pitch moves both alike), a fit of the altitude with the angles (the skyline
+     * {@linkplain HorizonProfile#raised raised} to first order) proposes an offset; the reference is then rendered
+     * again from that eye, the pose refined against it, and the step repeated (at most {@link #ALTITUDE_RENDERS}
+     * renders, until a step is under {@link #ALTITUDE_STEP_METRES}). A render, not the first-order profile, decides:
+     * raising the eye also shows terrain a near slope hid. The offset is kept when the pose fits the skyline better
+     * with it and its standard error is at most {@link #ALTITUDE_SIGMA_MAX_METRES}; else the estimate is returned as
+     * it was. An unsure estimate is returned as it was (its pose is not trusted enough to measure the altitude by).
+     *
+     * @param e      the estimate from {@link #estimate}, against {@code at0}
+     * @param raised renders the reference from a raised eye
+     */
+    public static OrientationEstimate withAltitude(OrientationEstimate e, Skyline sky, PhotoEdges edges, Reference at0,
+                                                   RaisedReference raised, OrientationPriors priors) {
+        if (e.unsure() || !at0.profile().hasDistances()) {
+            return e;
+        }
+        long t0 = System.nanoTime();
+        int w = sky.widthPx(), h = sky.heightPx();
+        Samples fine = Samples.of(sky, FINE_SAMPLES);
+        Target skyOnly = Target.of(fine, PhotoEdges.NONE, null, priors.lens());
+        Hypothesis pose = new Hypothesis(e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), Double.NaN);
+        double before = score(residualsPx(pose, fine, w, h, at0.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
+        double offset = 0, sigma = Double.NaN, previous = Double.NaN;
+        Reference ref = at0;
+        for (int renders = 0; renders < ALTITUDE_RENDERS; renders++) {
+            double[] step = altitudeStep(pose, skyOnly, w, h, ref.profile(), priors);
+            if (step == null) {
+                return e; // not constrained
+            }
+            sigma = step[1];
+            if (Math.abs(step[0]) < ALTITUDE_STEP_METRES) {
+                break;
+            }
+            // The first-order steps fall short by about a constant ratio (terrain a near slope hid comes into view
+            // as the eye rises): from the second step on, the rest of that geometric series is taken at once.
+            double ratio = step[0] / previous, move = ratio > 0 && ratio < 0.7 ? step[0] / (1 - ratio) : step[0];
+            previous = step[0];
+            offset = Math.max(-ALTITUDE_LIMIT_METRES, Math.min(ALTITUDE_LIMIT_METRES, offset + move));
+            try {
+                ref = raised.at(offset);
+            } catch (IllegalArgumentException refused) {
+                return e; // an eye the renderer refuses (below the DEM's surface): left at the altitude assumed
+            }
+            pose = refine(pose, skyOnly, w, h, ref.profile(), priors);
+        }
+        double after = score(residualsPx(pose, fine, w, h, ref.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
+        if (offset == 0 || !(after < before) || !(sigma <= ALTITUDE_SIGMA_MAX_METRES)) {
+            return e;
+        }
+        // The final pose against the raised reference, skyline and edges, as the estimate's own was refined.
+        Target target = Target.of(fine, edges, ref.field(), priors.lens());
+        Hypothesis best = refine(pose, target, w, h, ref.profile(), priors);
+        Fit fit = Fit.of(best, target, w, h, ref.profile());
+        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), e.second(), e.marginScore(),
+                e.unsure(), e.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9, offset, sigma);
+    }
+
+    /** Largest standard error of an altitude offset that is kept, metres. */
+    public static final double ALTITUDE_SIGMA_MAX_METRES = 5;
+    /** Smallest residual, pixels, the altitude's standard error assumes per sample (the panorama's rows are quantized). */
+    public static final double ALTITUDE_RESIDUAL_FLOOR_PX = 0.5;
+    /** Largest altitude offset searched, metres. */
+    static final double ALTITUDE_LIMIT_METRES = 300;
+
+    /**
+     * One step on the altitude: the pose's free angles and the altitude fitted together to the skyline, the profile
+     * raised to first order ({@link HorizonProfile#raised}); {step metres, standard error metres}, the error from
+     * the residuals within the truncation and their derivatives there; null where the normal matrix is singular or
+     * the standard error above {@link #ALTITUDE_SIGMA_MAX_METRES}.
+     */
+    static double[] altitudeStep(Hypothesis pose, Target sky, int w, int h, HorizonProfile profile, OrientationPriors priors) {
+        boolean[] free = {!priors.headingPinned(), Double.isNaN(priors.pitchDeg()), Double.isNaN(priors.rollDeg()),
+            !priors.hfovPinned(), true};
+        double[] lo = {Double.NEGATIVE_INFINITY, -priors.pitchLimitDeg() - 5, Double.NEGATIVE_INFINITY, fovLow(priors),
+            -ALTITUDE_LIMIT_METRES};
+        double[] hi = {Double.POSITIVE_INFINITY, priors.pitchLimitDeg() + 5, Double.POSITIVE_INFINITY, fovHigh(priors),
+            ALTITUDE_LIMIT_METRES};
+        java.util.function.Function<double[], double[]> residuals = q -> residualsPx(hyp(q), sky.sky(), w, h,
+                q[4] == 0 ? profile : profile.raised(q[4]), sky.lens());
+        // Levenberg–Marquardt from the pose at offset 0 with the shrinking truncation: the samples that tell the
+        // altitude (a near ridge the pose could not fit) lie beyond the last truncation at first.
+        double[] p = levenbergMarquardt(new double[] {pose.headingDeg(), pose.pitchDeg(), pose.rollDeg(), pose.hfovDeg(), 0},
+                free, lo, hi, residuals, sky);
+        double[] r = residuals.apply(p);
+        int n = r.length, np = p.length;
+        double[][] jac = new double[np][];
+        for (int k = 0; k < np; k++) {
+            if (free[k]) {
+                double[] q = p.clone();
+                q[k] += 1e-3;
+                double[] rq = residuals.apply(q);
+                jac[k] = new double[n];
+                for (int i = 0; i < n; i++) {
+                    jac[k][i] = (rq[i] - r[i]) / 1e-3;
+                }
+            }
+        }
+        double[][] a = new double[np][np];
+        double sw = 0, sq = 0;
+        for (int i = 0; i < n; i++) {
+            if (!(Math.abs(r[i]) < TRUNCATION_PX)) {
+                continue;
+            }
+            boolean usable = true;
+            for (int k = 0; k < np; k++) {
+                usable &= jac[k] == null || Double.isFinite(jac[k][i]);
+            }
+            if (!usable) {
+                continue;
+            }
+            double wi = sky.weight(i);
+            sw += wi;
+            sq += wi * r[i] * r[i];
+            for (int k = 0; k < np; k++) {
+                for (int l = 0; jac[k] != null && l < np; l++) {
+                    if (jac[l] != null) {
+                        a[k][l] += wi * jac[k][i] * jac[l][i];
+                    }
+                }
+            }
+        }
+        for (int k = 0; k < np; k++) {
+            if (!free[k]) {
+                a[k][k] = 1;
+            }
+        }
+        double[] column = solve(a, new double[] {0, 0, 0, 0, 1});
+        if (column == null || !(column[4] > 0)) {
+            return null;
+        }
+        double variance = Math.max(ALTITUDE_RESIDUAL_FLOOR_PX * ALTITUDE_RESIDUAL_FLOOR_PX, sw > 0 ? sq / sw : 0);
+        double sigma = Math.sqrt(variance * column[4]);
+        return sigma <= ALTITUDE_SIGMA_MAX_METRES ? new double[] {p[4], sigma} : null;
+    }
+
+    /**
+     * How a pose fits: the RMS of the skyline residuals within {@link #TRUNCATION_PX}, their weighted share, and the
+     * edge points' score (NaN without edges).
+     */
+    record Fit(double residualPx, double inlierShare, double edgeScore) {
+        static Fit of(Hypothesis pose, Target target, int w, int h, HorizonProfile profile) {
+            Samples fine = target.sky();
+            double[] res = residualsPx(pose, fine, w, h, profile, target.lens());
+            double sw = 0, inW = 0, sq = 0;
+            for (int i = 0; i < res.length; i++) {
+                sw += fine.w()[i];
+                if (Math.abs(res[i]) < TRUNCATION_PX) {
+                    inW += fine.w()[i];
+                    sq += fine.w()[i] * res[i] * res[i];
+                }
+            }
+            double edgeScore = Double.NaN;
+            if (target.hasEdges()) {
+                double[] all = residualsPx(pose, target, w, h, profile);
+                double c = 0;
+                for (int i = fine.size(); i < all.length; i++) {
+                    double a = Math.abs(all[i]);
+                    c += a < TRUNCATION_PX ? a / TRUNCATION_PX : 1;
+                }
+                edgeScore = c / (all.length - fine.size());
+            }
+            return new Fit(inW > 0 ? Math.sqrt(sq / inW) : Double.NaN, inW / sw, edgeScore);
+        }
     }
 
     /**
@@ -318,11 +489,7 @@ public final class OrientationEstimator {
                                           CameraOrientation start, double hfovDeg, CameraSkyline camera) {
         Samples fine = Samples.of(sky, FINE_SAMPLES);
         int w = sky.widthPx(), h = sky.heightPx();
-        double skyW = 0;
-        for (double v : fine.w()) {
-            skyW += v;
-        }
-        Target target = new Target(fine, edges, field, edges.size() == 0 ? 0 : EDGE_WEIGHT * skyW / edges.size(), null);
+        Target target = Target.of(fine, edges, field, null);
         Hypothesis hyp = refine(new Hypothesis(start.headingDeg(), start.pitchDeg(), start.rollDeg(), hfovDeg, Double.NaN),
                 target, w, h, profile, OrientationPriors.NONE);
         if (camera != null) {

@@ -19,13 +19,16 @@ import dempano.camera.CameraIntrinsics;
  *                         (w / 2) / tan(hfov / 2), fy in proportion (so a field of view here, as {@code --hfov-deg}
  *                         with {@code --distortion}, is that of the undistorted image). Null: a distortion-free
  *                         camera with square pixels and the principal point at the image centre
+ * @param altitudeFree     whether the eye's altitude may be off: a confident estimate is then refined again with an
+ *                         altitude offset, kept where the skyline's distances constrain it (see
+ *                         {@link OrientationEstimator#ALTITUDE_SIGMA_MAX_METRES})
  */
 public record OrientationPriors(double headingDeg, double headingRangeDeg, double pitchDeg, double rollDeg,
                                 double hfovMinDeg, double hfovMaxDeg, double pitchLimitDeg, double rollLimitDeg,
-                                CameraIntrinsics lens) {
-    /** Default bounds: pitch ± 15°, roll ± 8°, horizontal FOV 15°–100°; a centred pinhole camera. */
+                                CameraIntrinsics lens, boolean altitudeFree) {
+    /** Default bounds: pitch ± 15°, roll ± 8°, horizontal FOV 15°–100°; a centred pinhole camera; the altitude pinned. */
     public static final OrientationPriors NONE = new OrientationPriors(Double.NaN, 180, Double.NaN, Double.NaN,
-            15, 100, 15, 8, null);
+            15, 100, 15, 8, null, false);
 
     public OrientationPriors {
         if (!Double.isNaN(headingDeg) && !(Double.isFinite(headingDeg) && headingRangeDeg >= 0 && headingRangeDeg <= 180)) {
@@ -47,25 +50,31 @@ public record OrientationPriors(double headingDeg, double headingRangeDeg, doubl
     }
 
     public OrientationPriors withHeading(double centreDeg, double rangeDeg) {
-        return new OrientationPriors(centreDeg, rangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
+        return new OrientationPriors(centreDeg, rangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens, altitudeFree);
     }
 
     public OrientationPriors withPitchDeg(double v) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, v, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
+        return new OrientationPriors(headingDeg, headingRangeDeg, v, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens, altitudeFree);
     }
 
     public OrientationPriors withRollDeg(double v) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, v, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens);
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, v, hfovMinDeg, hfovMaxDeg, pitchLimitDeg, rollLimitDeg, lens, altitudeFree);
     }
 
     public OrientationPriors withHfovRangeDeg(double min, double max) {
-        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, min, max, pitchLimitDeg, rollLimitDeg, lens);
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, min, max, pitchLimitDeg, rollLimitDeg, lens, altitudeFree);
     }
 
     /** The same priors for a camera of this shape (see {@code lens}); null for a centred pinhole camera. */
     public OrientationPriors withLens(CameraIntrinsics v) {
         return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg,
-                rollLimitDeg, v);
+                rollLimitDeg, v, altitudeFree);
+    }
+
+    /** The same priors with the eye's altitude free (or pinned) as {@code altitudeFree} says. */
+    public OrientationPriors withAltitudeFree(boolean v) {
+        return new OrientationPriors(headingDeg, headingRangeDeg, pitchDeg, rollDeg, hfovMinDeg, hfovMaxDeg, pitchLimitDeg,
+                rollLimitDeg, lens, v);
     }
 
     boolean headingPinned() {

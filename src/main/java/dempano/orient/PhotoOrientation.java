@@ -19,22 +19,26 @@ import java.util.Locale;
  * @param pitch   whether the pitch is estimated
  * @param roll    whether the roll is estimated
  * @param hfov    whether the horizontal field of view is estimated
+ * @param altitude whether the eye's altitude may be refined too (neither an absolute altitude nor an offset was given
+ *                by flag): where the skyline's distances constrain it ({@link OrientationEstimate#altitudeOffsetMetres})
  */
-public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boolean hfov) {
+public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boolean hfov, boolean altitude) {
     /** Resolution of the panorama matched against, pixels per degree. */
     public static final double PANORAMA_PPD = 10;
 
     /**
      * What is open: a value is open when supplying it shortens the metadata's list of missing values; the heading
-     * also when {@code headingPrior} asks to search around a known heading.
+     * also when {@code headingPrior} asks to search around a known heading; the altitude unless a flag gave it.
      */
     public static PhotoOrientation open(PhotoMetadata meta, PhotoOverrides o, boolean headingPrior) {
         int missing = meta.missing(o).size();
         return new PhotoOrientation(headingPrior || meta.missing(o.withHeadingDeg(0)).size() < missing,
                 meta.missing(o.withPitchDeg(0)).size() < missing, meta.missing(o.withRollDeg(0)).size() < missing,
-                meta.missing(o.withHorizontalFovDeg(50)).size() < missing);
+                meta.missing(o.withHorizontalFovDeg(50)).size() < missing,
+                Double.isNaN(o.altitudeMetres()) && Double.isNaN(o.offsetMetres()));
     }
 
+    /** Whether anything is estimated: one of the angles (the altitude is refined only with them). */
     public boolean any() {
         return heading || pitch || roll || hfov;
     }
@@ -48,12 +52,19 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         return hfov ? p.withHorizontalFovDeg(50) : p;
     }
 
-    /** The overrides with the estimate in the open values. */
-    public PhotoOverrides apply(PhotoOverrides o, OrientationEstimate e) {
+    /**
+     * The overrides with the estimate in the open values; an estimated altitude offset moves {@code pose}'s
+     * absolute altitude where it has one (EXIF GPS), else its offset from the DEM.
+     */
+    public PhotoOverrides apply(PhotoOverrides o, OrientationEstimate e, dempano.camera.CameraPose pose) {
         PhotoOverrides p = o;
         p = heading ? p.withHeadingDeg(e.headingDeg()) : p;
         p = pitch ? p.withPitchDeg(e.pitchDeg()) : p;
         p = roll ? p.withRollDeg(e.rollDeg()) : p;
+        if (altitude && Double.isFinite(e.altitudeOffsetMetres())) {
+            p = Double.isNaN(pose.altitudeMetres()) ? p.withOffsetMetres(pose.offsetMetres() + e.altitudeOffsetMetres())
+                    : p.withAltitudeMetres(pose.altitudeMetres() + e.altitudeOffsetMetres());
+        }
         return hfov ? p.withHorizontalFovDeg(e.hfovDeg()) : p;
     }
 
@@ -86,11 +97,16 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      */
     public Result estimate(PanoramaRenderer renderer, PanoramaRequest settings, BufferedImage photo,
                            dempano.camera.PhotoCamera camera, double headingRangeDeg) {
-        dempano.panorama.Panorama pano = renderer.render(settings.withPixelsPerDegree(PANORAMA_PPD)
-                .withElevationRange(new ElevationRange(-30, 45, false)).withColour(false).withExactDistances(false));
-        dempano.camera.CameraOrientation k = camera.pose().orientation();
+        PanoramaRequest base = settings.withPixelsPerDegree(PANORAMA_PPD)
+                .withElevationRange(new ElevationRange(-30, 45, false)).withColour(false).withExactDistances(false);
+        dempano.camera.CameraPose pose = camera.pose();
+        OrientationEstimator.RaisedReference raised = altitude ? metres -> reference(renderer.render(
+                Double.isNaN(pose.altitudeMetres()) ? base.withOffsetMetres(pose.offsetMetres() + metres)
+                        : base.withAltitudeMetres(pose.altitudeMetres() + metres))) : null;
+        dempano.camera.CameraOrientation k = pose.orientation();
         CameraIntrinsics lens = camera.intrinsics();
-        OrientationPriors priors = OrientationPriors.NONE.withLens(isCentredPinhole(lens) ? null : lens);
+        OrientationPriors priors = OrientationPriors.NONE.withLens(isCentredPinhole(lens) ? null : lens)
+                .withAltitudeFree(altitude);
         if (!heading) {
             priors = priors.withHeading(k.headingDeg(), 0);
         } else if (!Double.isNaN(headingRangeDeg)) {
@@ -102,7 +118,12 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
             double fov = Math.toDegrees(2 * Math.atan(lens.widthPx() / 2.0 / lens.fxPx()));
             priors = priors.withHfovRangeDeg(fov, fov);
         }
-        return match(photo, HorizonProfile.of(pano), SilhouetteField.of(pano), priors);
+        return match(photo, reference(renderer.render(base)), raised, priors);
+    }
+
+    /** What a photo is matched against in a panorama: its skyline (with distances) and depth edges. */
+    public static OrientationEstimator.Reference reference(dempano.panorama.Panorama pano) {
+        return new OrientationEstimator.Reference(HorizonProfile.of(pano), SilhouetteField.of(pano));
     }
 
     /** Whether a camera is the estimator's default: no distortion, square pixels, the principal point at the centre. */
@@ -120,13 +141,35 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      * @return the estimate, its residual in the photo's own pixels, and the overlay drawn on the matched image
      */
     public static Result match(BufferedImage photo, HorizonProfile profile, SilhouetteField field, OrientationPriors priors) {
+        return match(photo, new OrientationEstimator.Reference(profile, field), null, priors);
+    }
+
+    /**
+     * As {@link #match(BufferedImage, HorizonProfile, SilhouetteField, OrientationPriors)}, then, where the priors
+     * leave the altitude free and {@code raised} can render the reference from another eye, the estimate refined
+     * with the altitude ({@link OrientationEstimator#withAltitude}).
+     *
+     * @param raised renders the reference from an eye raised by some metres; null: the altitude is not refined
+     */
+    public static Result match(BufferedImage photo, OrientationEstimator.Reference at0,
+                               OrientationEstimator.RaisedReference raised, OrientationPriors priors) {
         MatchImage m = MatchImage.of(photo);
         CameraIntrinsics lens = priors.lens() == null ? null : scaled(priors.lens(), m.image().getWidth(),
                 m.image().getHeight());
         OrientationPriors p = priors.withLens(lens);
         Skyline sky = SkylineExtractor.extract(m.image());
-        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.extract(m.image(), sky), profile, field, p)
-                .withResidualScaled(m.scale());
+        PhotoEdges edges = PhotoEdges.extract(m.image(), sky);
+        OrientationEstimate e = OrientationEstimator.estimate(sky, edges, at0.profile(), at0.field(), p);
+        HorizonProfile profile = at0.profile();
+        if (raised != null && priors.altitudeFree()) {
+            java.util.Map<Double, OrientationEstimator.Reference> renders = new java.util.HashMap<>();
+            OrientationEstimator.RaisedReference once = metres -> renders.computeIfAbsent(metres, raised::at);
+            e = OrientationEstimator.withAltitude(e, sky, edges, at0, once, p);
+            if (Double.isFinite(e.altitudeOffsetMetres())) {
+                profile = once.at(e.altitudeOffsetMetres()).profile();
+            }
+        }
+        e = e.withResidualScaled(m.scale());
         return new Result(e, OrientationOverlay.draw(m.image(), sky, profile, e, lens), m.image().getWidth(),
                 m.image().getHeight());
     }
@@ -170,7 +213,8 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
             OrientationEstimate e = estimate;
             return String.format(Locale.ROOT, "%s estimated from the skyline: %s (matched in %d × %d px; confidence:"
                     + " residual in photo pixels; margin = score of the best other heading minus the best score, below"
-                    + " %.2f or fewer than %.0f %% of samples fitting is flagged UNSURE)", String.join(", ", open.names()),
+                    + " %.2f or fewer than %.0f %% of samples fitting is flagged UNSURE)", String.join(", ", open.names())
+                            + (Double.isFinite(e.altitudeOffsetMetres()) ? ", eye altitude" : ""),
                     e.summary(), matchedWidthPx, matchedHeightPx, OrientationEstimator.UNSURE_MARGIN,
                     100 * OrientationEstimator.UNSURE_INLIER_SHARE);
         }

@@ -144,11 +144,12 @@ public final class PhotoJob {
                     null, List.of());
         }
         // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
-        PhotoOrientation open = photo == null ? new PhotoOrientation(false, false, false, false)
+        PhotoOrientation open = photo == null ? new PhotoOrientation(false, false, false, false, false)
                 : PhotoOrientation.open(meta, o, !Double.isNaN(in.headingRangeDeg()));
         PhotoOverrides given = o;
         if (open.any()) {
-            log.progress("estimating from the skyline: " + String.join(", ", open.names()));
+            log.progress("estimating from the skyline: " + String.join(", ", open.names())
+                    + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
             o = open.placeholders(o);
         }
         PhotoCamera camera = resolve(meta, o);
@@ -174,7 +175,7 @@ public final class PhotoJob {
             }
             String line = est.provenance(open);
             log.result(line);
-            camera = resolve(meta, open.apply(given, est.estimate()));
+            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()));
             List<String> prov = new ArrayList<>(camera.provenance());
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);

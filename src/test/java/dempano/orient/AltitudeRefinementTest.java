@@ -1,0 +1,131 @@
+package dempano.orient;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dempano.camera.CameraOrientation;
+import java.util.function.DoubleUnaryOperator;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The altitude refinement against terrain whose skyline is known in closed form from any eye height: a near ridge
+ * line 2.5 km away in front of a far range 25 km away (flat earth, heights relative to the assumed eye).
+ */
+class AltitudeRefinementTest {
+    static final int W = 480, H = 320;
+    static final double NEAR_METRES = 2500, FAR_METRES = 25_000;
+
+    static double nearHeight(double azDeg) {
+        double a = Math.toRadians(azDeg);
+        return 200 + 80 * Math.sin(3 * a) + 40 * Math.sin(11 * a + 1);
+    }
+
+    static double farHeight(double azDeg) {
+        double a = Math.toRadians(azDeg);
+        return 1800 + 400 * Math.sin(5 * a + 0.4) + 250 * Math.sin(23 * a + 2.1);
+    }
+
+    /** Skyline elevation, degrees, seen from an eye {@code raised} metres above the assumed one. */
+    static DoubleUnaryOperator horizon(double raised) {
+        return az -> Math.toDegrees(Math.max(Math.atan2(nearHeight(az) - raised, NEAR_METRES),
+                Math.atan2(farHeight(az) - raised, FAR_METRES)));
+    }
+
+    /** The reference as a 10 px/° panorama renders it from that eye: rows 0.1° apart, the skyline's distance per column. */
+    static OrientationEstimator.Reference reference(double raised, boolean farOnly) {
+        double ppd = 10, top = 45;
+        int n = 3600;
+        double[] el = new double[n], d = new double[n];
+        for (int c = 0; c < n; c++) {
+            double az = (c + 0.5) / ppd;
+            double near = Math.atan2(nearHeight(az) - raised, NEAR_METRES), far = Math.atan2(farHeight(az) - raised, FAR_METRES);
+            double e = Math.toDegrees(farOnly ? far : Math.max(near, far));
+            int r = (int) Math.ceil((top - e) * ppd - 0.5);
+            el[c] = top - r / ppd;
+            d[c] = !farOnly && near > far ? Math.hypot(NEAR_METRES, nearHeight(az) - raised)
+                    : Math.hypot(FAR_METRES, farHeight(az) - raised);
+        }
+        return new OrientationEstimator.Reference(new HorizonProfile(el, d, ppd), null);
+    }
+
+    @Test
+    void anEyeTwentyMetresHigherIsFoundAndThePoseWithIt() {
+        double heading = 77.7, pitch = 2, roll = -1.5, hfov = 55, truth = 20;
+        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, pitch, roll), hfov);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertFalse(pinned.unsure(), pinned.summary());
+        int[] renders = {0};
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+            renders[0]++;
+            return reference(m, false);
+        }, priors);
+        String what = e.summary() + " (altitude pinned: " + pinned.summary() + ")";
+        assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
+        assertTrue(e.altitudeSigmaMetres() > 0 && e.altitudeSigmaMetres() <= OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES, what);
+        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.05, what);
+        assertEquals(pitch, e.pitchDeg(), 0.05, what);
+        assertEquals(hfov, e.hfovDeg(), 0.005 * hfov, what);
+        assertTrue(e.residualPx() < pinned.residualPx() / 2, what);
+        // Pinned at the wrong altitude, the pitch takes up the near ridge's drop and misses the far range's.
+        assertTrue(Math.abs(pinned.pitchDeg() - pitch) > 0.1 || OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 0.1
+                || Math.abs(pinned.hfovDeg() - hfov) > 0.01 * hfov, what);
+        assertTrue(renders[0] >= 1 && renders[0] <= OrientationEstimator.ALTITUDE_RENDERS, "renders " + renders[0]);
+    }
+
+    @Test
+    void anEyeTheRendererRefusesEndsTheRefinementWithTheEstimateAsItWas() {
+        // The photo from 10 m lower than assumed; the renderer refuses every eye below the assumed one (as below the
+        // DEM's surface).
+        Skyline sky = SyntheticSkyline.project(horizon(-10), W, H, new CameraOrientation(77.7, 2, -1.5), 55);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertFalse(e.unsure(), e.summary());
+        int[] refusals = {0};
+        OrientationEstimate refined = OrientationEstimator.withAltitude(e, sky, PhotoEdges.NONE, at0, m -> {
+            if (m < 0) {
+                refusals[0]++;
+                throw new IllegalArgumentException("the eye would be below the DEM surface");
+            }
+            return reference(m, false);
+        }, priors);
+        assertSame(e, refined, refined.summary());
+        assertEquals(1, refusals[0]);
+        // Allowed down there, it is found.
+        OrientationEstimate allowed = OrientationEstimator.withAltitude(e, sky, PhotoEdges.NONE, at0, m -> reference(m, false), priors);
+        assertEquals(-10, allowed.altitudeOffsetMetres(), 1.5, allowed.summary());
+    }
+
+    @Test
+    void aSkylineAllAtOneDistanceLeavesTheAltitudeAlone() {
+        // Only the far range: raising the eye moves every sample alike, which the pitch does too.
+        Skyline sky = SyntheticSkyline.project(az -> Math.toDegrees(Math.atan2(farHeight(az) - 20, FAR_METRES)), W, H,
+                new CameraOrientation(200, 1, 0.5), 45);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, true);
+        OrientationEstimate e = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        OrientationEstimate refined = OrientationEstimator.withAltitude(e, sky, PhotoEdges.NONE, at0, m -> reference(m, true), priors);
+        assertSame(e, refined, refined.summary());
+        assertTrue(Double.isNaN(refined.altitudeOffsetMetres()));
+    }
+
+    @Test
+    void theFirstOrderProfileRaisesEachColumnByItsOwnDistance() {
+        double[] el = new double[3600], d = new double[3600];
+        java.util.Arrays.fill(el, 2);
+        java.util.Arrays.fill(d, Double.NaN);
+        d[0] = 1000;
+        d[1] = 10_000;
+        HorizonProfile raised = new HorizonProfile(el, d, 10).raised(20);
+        double e = Math.toRadians(2);
+        assertEquals(Math.toDegrees(Math.atan2(1000 * Math.sin(e) - 20, 1000 * Math.cos(e))), raised.columnElevationDeg(0), 1e-12);
+        assertEquals(Math.toDegrees(Math.atan2(10_000 * Math.sin(e) - 20, 10_000 * Math.cos(e))), raised.columnElevationDeg(1), 1e-12);
+        assertEquals(2, raised.columnElevationDeg(2), 0); // distance unknown: kept
+        assertFalse(new HorizonProfile(el, 10).hasDistances());
+        assertTrue(raised.hasDistances());
+    }
+}
