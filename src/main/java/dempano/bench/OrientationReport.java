@@ -153,7 +153,8 @@ public final class OrientationReport {
               the altitude with the angles (the skyline raised to first order, atan2(d·sin e − Δh, d·cos e) per column)
               proposes an offset; the panorama is rendered again from there (raising the eye also shows terrain a near slope
               hid, which the first order misses: 17 → 22.5 → 25.4 m for a true 25), the pose refined, and the step
-              repeated, at most 4 renders. Kept when its standard error is at most 5 m and the skyline fits better;
+              repeated, at most 4 renders. Kept when its standard error is at most 5 m, it is at least 2 standard errors
+              from 0 and the skyline fits better;
               `altitudeOffsetMetres` ± `altitudeSigmaMetres` in `P-orientation.json`, and the photo's own render uses it.
               The margin and the unsure flag still compare headings at the assumed eye.
 
@@ -346,8 +347,10 @@ public final class OrientationReport {
                 + " with the altitude pinned at the assumed eye and refined as the photo command does"
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
-                + " standard error is at most %.0f m and the skyline fits better). Every photo is in `orientation-altitude.csv`.%n%n",
-                ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES));
+                + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better)."
+                + " Every photo is in `orientation-altitude.csv`.%n%n",
+                ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,
+                OrientationEstimator.ALTITUDE_SIGNIFICANCE));
         b.append("| altitude | photos | heading ≤ 0.5° | heading ≤ 2° | median heading error | median FOV error | flagged unsure"
                 + " | heading > 5° off and not flagged | altitude estimated | median altitude error | median match time |\n");
         b.append("|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -549,13 +552,15 @@ public final class OrientationReport {
 
     static void writeCsv(List<Row> rows, Path file) throws IOException {
         StringBuilder b = new StringBuilder("scene,photo,step,heading_deg,pitch_deg,roll_deg,hfov_deg,est_heading_deg,"
-                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds,cpu_seconds,truth_score,skyline_km\n");
+                + "est_pitch_deg,est_roll_deg,est_hfov_deg,heading_error_deg,residual_px,inlier_share,score,edge_score,margin,unsure,seconds,cpu_seconds,truth_score,skyline_km,"
+                + "altitude_offset_m,altitude_sigma_m\n");
         for (Row r : rows) {
             OrientationEstimate e = r.est();
-            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f,%.3f,%.4f,%.2f%n",
+            b.append(String.format(Locale.ROOT, "%s,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%b,%.3f,%.3f,%.4f,%.2f,%.2f,%.2f%n",
                     r.scene(), r.photo(), r.step().name().toLowerCase(Locale.ROOT), r.headingDeg(), r.pitchDeg(), r.rollDeg(),
                     r.hfovDeg(), e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), r.headingError(), e.residualPx(),
-                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds(), r.cpuSeconds(), r.truthScore(), r.skylineMetres() / 1000));
+                    e.inlierShare(), e.score(), e.edgeScore(), e.marginScore(), e.unsure(), r.seconds(), r.cpuSeconds(), r.truthScore(), r.skylineMetres() / 1000,
+                    e.altitudeOffsetMetres(), e.altitudeSigmaMetres()));
         }
         Files.writeString(file, b.toString());
     }
