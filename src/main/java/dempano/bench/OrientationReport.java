@@ -87,11 +87,7 @@ public final class OrientationReport {
     record AltitudeRow(String scene, int photo, double headingDeg, double hfovDeg, double skylineMetres,
                        OrientationEstimate pinned, OrientationEstimate free, double seconds) {
         static double headingError(OrientationEstimate e, double truthDeg) {
-            if (Double.isNaN(e.headingDeg())) {
-                return 180;
-            }
-            double d = Math.abs(((e.headingDeg() - truthDeg) % 360 + 360) % 360);
-            return Math.min(d, 360 - d);
+            return Double.isNaN(e.headingDeg()) ? 180 : OrientationEstimator.headingGap(e.headingDeg(), truthDeg);
         }
     }
 
@@ -355,15 +351,15 @@ public final class OrientationReport {
                 + " | heading > 5° off and not flagged | altitude estimated | median altitude error | median match time |\n");
         b.append("|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (boolean refined : new boolean[] {false, true}) {
+            java.util.function.Function<AltitudeRow, OrientationEstimate> est = refined ? AltitudeRow::free : AltitudeRow::pinned;
             int n = rows.size();
-            double[] he = rows.stream().mapToDouble(r -> AltitudeRow.headingError(refined ? r.free() : r.pinned(), r.headingDeg()))
-                    .toArray();
-            double[] fe = rows.stream().filter(r -> !Double.isNaN((refined ? r.free() : r.pinned()).hfovDeg()))
-                    .mapToDouble(r -> Math.abs((refined ? r.free() : r.pinned()).hfovDeg() / r.hfovDeg() - 1)).toArray();
+            double[] he = rows.stream().mapToDouble(r -> AltitudeRow.headingError(est.apply(r), r.headingDeg())).toArray();
+            double[] fe = rows.stream().filter(r -> !Double.isNaN(est.apply(r).hfovDeg()))
+                    .mapToDouble(r -> Math.abs(est.apply(r).hfovDeg() / r.hfovDeg() - 1)).toArray();
             long within05 = Arrays.stream(he).filter(x -> x <= 0.5).count(), within2 = Arrays.stream(he).filter(x -> x <= 2).count();
-            long unsure = rows.stream().filter(r -> (refined ? r.free() : r.pinned()).unsure()).count();
-            long confidentWrong = rows.stream().filter(r -> !(refined ? r.free() : r.pinned()).unsure()
-                    && AltitudeRow.headingError(refined ? r.free() : r.pinned(), r.headingDeg()) > 5).count();
+            long unsure = rows.stream().filter(r -> est.apply(r).unsure()).count();
+            long confidentWrong = rows.stream().filter(r -> !est.apply(r).unsure()
+                    && AltitudeRow.headingError(est.apply(r), r.headingDeg()) > 5).count();
             double[] alt = rows.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres()))
                     .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES)).toArray();
             b.append(String.format(Locale.ROOT, "| %s | %d | %.0f %% | %.0f %% | %.2f° | %.2f %% | %.0f %% | %d | %s | %s | %s |%n",

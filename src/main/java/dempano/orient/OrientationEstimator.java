@@ -405,18 +405,7 @@ public final class OrientationEstimator {
                 free, lo, hi, residuals, sky);
         double[] r = residuals.apply(p);
         int n = r.length, np = p.length;
-        double[][] jac = new double[np][];
-        for (int k = 0; k < np; k++) {
-            if (free[k]) {
-                double[] q = p.clone();
-                q[k] += 1e-3;
-                double[] rq = residuals.apply(q);
-                jac[k] = new double[n];
-                for (int i = 0; i < n; i++) {
-                    jac[k][i] = (rq[i] - r[i]) / 1e-3;
-                }
-            }
-        }
+        double[][] jac = jacobian(p, free, residuals, r);
         double[][] a = new double[np][np];
         double sw = 0, sq = 0;
         for (int i = 0; i < n; i++) {
@@ -847,33 +836,44 @@ public final class OrientationEstimator {
         return new Hypothesis(normalize360(p[0]), p[1], p[2], p[3], score(r, s, TRUNCATION_PX));
     }
 
+    /** Step of the forward differences of {@link #jacobian}, in each parameter's own unit (degrees, metres). */
+    static final double JACOBIAN_STEP = 1e-3;
+
+    /**
+     * Forward-difference derivatives of the residuals at {@code p} (whose residuals are {@code r}) in each free
+     * parameter, {@link #JACOBIAN_STEP} apart; null rows for the pinned ones.
+     */
+    static double[][] jacobian(double[] p, boolean[] free, java.util.function.Function<double[], double[]> residuals,
+                               double[] r) {
+        double[][] jac = new double[p.length][];
+        for (int k = 0; k < p.length; k++) {
+            if (free[k]) {
+                double[] q = p.clone();
+                q[k] += JACOBIAN_STEP;
+                double[] rq = residuals.apply(q);
+                jac[k] = new double[r.length];
+                for (int i = 0; i < r.length; i++) {
+                    jac[k][i] = (rq[i] - r[i]) / JACOBIAN_STEP;
+                }
+            }
+        }
+        return jac;
+    }
+
     /**
      * Levenberg–Marquardt on the truncated squared residuals (truncation {@link #SCHEDULE_PX}, shrinking), forward
-     * differences of 1e-3 per parameter, each parameter kept within [lo, hi]; returns the parameters reached.
+     * differences ({@link #jacobian}), each parameter kept within [lo, hi]; returns the parameters reached.
      */
     static double[] levenbergMarquardt(double[] start, boolean[] free, double[] lo, double[] hi,
                                        java.util.function.Function<double[], double[]> residuals, Target s) {
         int np = start.length, n = s.size();
         double[] p = start.clone();
-        double[] steps = new double[np];
-        java.util.Arrays.fill(steps, 1e-3);
         for (double t : SCHEDULE_PX) {
             double lambda = 1e-3;
             double[] r = residuals.apply(p);
             double cost = truncatedCost(r, s, t);
             for (int iter = 0; iter < 25; iter++) {
-                double[][] jac = new double[np][];
-                for (int k = 0; k < np; k++) {
-                    if (free[k]) {
-                        double[] q = p.clone();
-                        q[k] += steps[k];
-                        double[] rq = residuals.apply(q);
-                        jac[k] = new double[n];
-                        for (int i = 0; i < n; i++) {
-                            jac[k][i] = (rq[i] - r[i]) / steps[k];
-                        }
-                    }
-                }
+                double[][] jac = jacobian(p, free, residuals, r);
                 double[][] a = new double[np][np];
                 double[] g = new double[np];
                 for (int i = 0; i < n; i++) {
@@ -1083,7 +1083,8 @@ public final class OrientationEstimator {
         return Math.max(-limit, Math.min(limit, v));
     }
 
-    static double headingGap(double a, double b) {
+    /** The angle between two headings, degrees, [0, 180]. */
+    public static double headingGap(double a, double b) {
         double d = Math.abs(normalize360(a) - normalize360(b));
         return Math.min(d, 360 - d);
     }
