@@ -43,10 +43,13 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         return heading || pitch || roll || hfov;
     }
 
-    /** The open values filled with placeholders, so that the rest of the camera resolves. */
-    public PhotoOverrides placeholders(PhotoOverrides o) {
+    /**
+     * The open values filled with placeholders, so that the rest of the camera resolves. A heading that the flags or
+     * the metadata give is kept: with a heading prior it is the centre searched around.
+     */
+    public PhotoOverrides placeholders(PhotoMetadata meta, PhotoOverrides o) {
         PhotoOverrides p = o;
-        p = heading && Double.isNaN(o.headingDeg()) ? p.withHeadingDeg(0) : p;
+        p = heading && meta.missing(o.withHeadingDeg(0)).size() < meta.missing(o).size() ? p.withHeadingDeg(0) : p;
         p = pitch ? p.withPitchDeg(0) : p;
         p = roll ? p.withRollDeg(0) : p;
         return hfov ? p.withHorizontalFovDeg(50) : p;
@@ -54,18 +57,66 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
 
     /**
      * The overrides with the estimate in the open values; an estimated altitude offset moves {@code pose}'s
-     * absolute altitude where it has one (EXIF GPS), else its offset from the DEM.
+     * absolute altitude where it has one (EXIF GPS: the camera's own altitude, so the camera height stays that of
+     * {@code pose}), else its offset from the DEM.
      */
     public PhotoOverrides apply(PhotoOverrides o, OrientationEstimate e, dempano.camera.CameraPose pose) {
         PhotoOverrides p = o;
         p = heading ? p.withHeadingDeg(e.headingDeg()) : p;
         p = pitch ? p.withPitchDeg(e.pitchDeg()) : p;
         p = roll ? p.withRollDeg(e.rollDeg()) : p;
-        if (altitude && Double.isFinite(e.altitudeOffsetMetres())) {
-            p = Double.isNaN(pose.altitudeMetres()) ? p.withOffsetMetres(pose.offsetMetres() + e.altitudeOffsetMetres())
-                    : p.withAltitudeMetres(pose.altitudeMetres() + e.altitudeOffsetMetres());
+        if (altitudeEstimated(e)) {
+            if (Double.isNaN(pose.altitudeMetres())) {
+                p = p.withOffsetMetres(pose.offsetMetres() + e.altitudeOffsetMetres());
+            } else {
+                p = p.withAltitudeMetres(pose.altitudeMetres() + e.altitudeOffsetMetres());
+                p = Double.isNaN(o.cameraHeightMetres()) ? p.withCameraHeightMetres(pose.cameraHeightMetres()) : p;
+            }
         }
         return hfov ? p.withHorizontalFovDeg(e.hfovDeg()) : p;
+    }
+
+    private boolean altitudeEstimated(OrientationEstimate e) {
+        return altitude && e != null && Double.isFinite(e.altitudeOffsetMetres());
+    }
+
+    /** How a provenance line says that a value was estimated. */
+    public static final String ESTIMATED = "estimated from the skyline";
+
+    /**
+     * The camera's provenance ({@link PhotoMetadata#resolve}) with the lines of the values that {@link #apply} (or
+     * {@link #placeholders}) passed in as flags saying where they came from instead of naming flags nobody gave:
+     * "heading 235.5° estimated from the skyline", not "… from --heading-deg".
+     *
+     * @param given    the overrides as the user gave them
+     * @param estimate the estimate applied; null: before the estimate (the altitude is not relabelled)
+     */
+    public List<String> relabel(List<String> provenance, PhotoOverrides given, OrientationEstimate estimate) {
+        List<String> out = new ArrayList<>();
+        for (String line : provenance) {
+            String l = line;
+            l = heading ? replaceEnd(l, "heading ", " from " + PhotoOverrides.HEADING, " " + ESTIMATED) : l;
+            l = pitch ? replaceEnd(l, "pitch ", " from " + PhotoOverrides.PITCH, " " + ESTIMATED) : l;
+            l = roll ? replaceEnd(l, "roll ", " from " + PhotoOverrides.ROLL, " " + ESTIMATED) : l;
+            if (hfov && l.startsWith("focal length ") && l.contains(" px from " + PhotoOverrides.HFOV + " ")) {
+                l = l.replace(" px from " + PhotoOverrides.HFOV + " ", " px from a horizontal field of view of ")
+                        + " " + ESTIMATED;
+            }
+            if (altitudeEstimated(estimate)) {
+                l = replaceEnd(l, "standing on the DEM", " (" + PhotoOverrides.OFFSET + ")", " (" + ESTIMATED + ")");
+                l = replaceEnd(l, "standing altitude ", " from " + PhotoOverrides.ALTITUDE,
+                        " (the camera's altitude, the EXIF GPSAltitude corrected by the offset " + ESTIMATED + ")");
+                if (Double.isNaN(given.cameraHeightMetres())) { // set by apply() only with an absolute altitude
+                    l = replaceEnd(l, "camera ", " (" + PhotoOverrides.CAMERA_HEIGHT + ")", " (the altitude is the camera's)");
+                }
+            }
+            out.add(l);
+        }
+        return out;
+    }
+
+    private static String replaceEnd(String line, String start, String end, String by) {
+        return line.startsWith(start) && line.endsWith(end) ? line.substring(0, line.length() - end.length()) + by : line;
     }
 
     /** Names of the open values, for messages. */

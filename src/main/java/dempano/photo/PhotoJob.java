@@ -126,13 +126,16 @@ public final class PhotoJob {
             }
             BufferedImage stored;
             try {
-                stored = ImageIO.read(in.image().toFile());
+                stored = readPixels(in.image());
             } catch (IOException | RuntimeException e) {
                 throw new IllegalArgumentException(in.image() + ": corrupt photograph, its pixels cannot be decoded ("
                         + e.getMessage() + ")", e);
             }
             if (stored != null) {
                 photo = CameraWriter.displayed(stored, meta.orientation());
+            } else {
+                log.progress(in.image() + ": its metadata is read, but this Java has no decoder for its pixels (convert"
+                        + " it to JPEG or PNG): nothing is estimated from the photo and it is not overlaid");
             }
         } else {
             if (in.widthPx() == null || in.heightPx() == null || in.widthPx() < 1 || in.heightPx() < 1) {
@@ -150,10 +153,15 @@ public final class PhotoJob {
         if (open.any()) {
             log.progress("estimating from the skyline: " + String.join(", ", open.names())
                     + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
-            o = open.placeholders(o);
+            o = open.placeholders(meta, o);
         }
         PhotoCamera camera = resolve(meta, o);
-        camera.provenance().forEach(log::progress);
+        List<String> firstLines = open.relabel(camera.provenance(), given, null);
+        for (int i = 0; i < firstLines.size(); i++) {
+            if (firstLines.get(i).equals(camera.provenance().get(i))) {
+                log.progress(firstLines.get(i)); // the placeholders of the values to be estimated are not news
+            }
+        }
         PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
         BufferedImage orientationOverlay = null;
         String orientationJson = null;
@@ -176,7 +184,7 @@ public final class PhotoJob {
             String line = est.provenance(open);
             log.result(line);
             camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()));
-            List<String> prov = new ArrayList<>(camera.provenance());
+            List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
             orientationOverlay = est.overlay();
@@ -199,6 +207,40 @@ public final class PhotoJob {
             }
             set.commit();
             return new Result(camera, rendered, files);
+        }
+    }
+
+    /**
+     * The photo's pixels as ImageIO decodes them; null for a format it has no reader for. A file that ends before its
+     * pixels do (a truncated download or copy) is an error: the JPEG reader only warns and fills the missing rows
+     * with grey, which would be matched as landscape.
+     *
+     * @throws IOException naming the problem: unreadable, or ending early
+     */
+    static BufferedImage readPixels(Path image) throws IOException {
+        try (javax.imageio.stream.ImageInputStream stream = ImageIO.createImageInputStream(image.toFile())) {
+            if (stream == null) {
+                throw new IOException("cannot be opened");
+            }
+            java.util.Iterator<javax.imageio.ImageReader> readers = ImageIO.getImageReaders(stream);
+            if (!readers.hasNext()) {
+                return null;
+            }
+            javax.imageio.ImageReader reader = readers.next();
+            List<String> warnings = new ArrayList<>();
+            try {
+                reader.setInput(stream, true, true);
+                reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
+                BufferedImage img = reader.read(0, reader.getDefaultReadParam());
+                for (String w : warnings) {
+                    if (w.toLowerCase(java.util.Locale.ROOT).contains("premature end")) {
+                        throw new IOException("the file ends before the image does: " + w);
+                    }
+                }
+                return img;
+            } finally {
+                reader.dispose();
+            }
         }
     }
 

@@ -1,0 +1,58 @@
+package dempano.photo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Reading a photograph's pixels: whole, cut short, or in a format without a reader. */
+class PhotoJobReadTest {
+    @TempDir
+    Path tmp;
+
+    static BufferedImage gradient(int w, int h) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                img.setRGB(x, y, (x * 255 / w) << 16 | (y * 255 / h) << 8 | 0x40);
+            }
+        }
+        return img;
+    }
+
+    @Test
+    void aWholeJpegIsReadAndOneCutShortIsAnErrorNotGreyRows() throws IOException {
+        Path whole = tmp.resolve("whole.jpg");
+        ImageIO.write(gradient(320, 240), "jpg", whole.toFile());
+        BufferedImage img = PhotoJob.readPixels(whole);
+        assertEquals(320, img.getWidth());
+        assertEquals(240, img.getHeight());
+        byte[] bytes = Files.readAllBytes(whole);
+        Path cut = Files.write(tmp.resolve("cut.jpg"), Arrays.copyOf(bytes, bytes.length / 2));
+        // ImageIO.read decodes it without a word, the lower rows grey.
+        assertEquals(240, ImageIO.read(cut.toFile()).getHeight());
+        IOException e = assertThrows(IOException.class, () -> PhotoJob.readPixels(cut));
+        assertTrue(e.getMessage().contains("ends before the image does"), e.getMessage());
+    }
+
+    @Test
+    void aPngCutShortIsAnErrorAndAFormatWithoutAReaderIsNull() throws IOException {
+        Path whole = tmp.resolve("whole.png");
+        ImageIO.write(gradient(320, 240), "png", whole.toFile());
+        assertEquals(320, PhotoJob.readPixels(whole).getWidth());
+        byte[] bytes = Files.readAllBytes(whole);
+        Path cut = Files.write(tmp.resolve("cut.png"), Arrays.copyOf(bytes, bytes.length / 2));
+        assertThrows(IOException.class, () -> PhotoJob.readPixels(cut));
+        Path text = Files.writeString(tmp.resolve("notes.heic"), "not an image the JDK reads");
+        assertNull(PhotoJob.readPixels(text));
+    }
+}
