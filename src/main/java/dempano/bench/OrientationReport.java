@@ -143,7 +143,7 @@ public final class OrientationReport {
               samples under 3 px), `score` (mean truncated residual / 3 px over skyline and edges: 0 perfect, 1 nothing
               fits), `edgeScore` (the same for the edge points alone), `marginScore` (score of the best other heading,
               more than 2° away, minus the best score). %UNSURE_RULE%
-            - Altitude (`OrientationEstimator.withAltitude`, where the altitude is not given by flag): a confident estimate is
+            - Altitude (`OrientationEstimator.withAltitude`, where the altitude is not given by flag): the estimate is
               refined again with the eye's altitude. A near ridge moves against a far one as the eye rises (pitch moves
               both alike), so where the skyline's distances (`HorizonProfile` keeps each column's) constrain it, a fit of
               the altitude with the angles (the skyline raised to first order, atan2(d·sin e − Δh, d·cos e) per column)
@@ -152,7 +152,11 @@ public final class OrientationReport {
               repeated, at most 4 renders. Kept when its standard error is at most 5 m, it is at least 2 standard errors
               from 0 and the skyline fits better;
               `altitudeOffsetMetres` ± `altitudeSigmaMetres` in `P-orientation.json`, and the photo's own render uses it.
-              The margin and the unsure flag still compare headings at the assumed eye.
+              The margin and the unsure flag of a confident estimate still compare headings at the assumed eye. An unsure
+              estimate may be unsure because the eye is wrong (a near ridge fits at no heading): its best and second-best
+              poses are each refined with the altitude so, and where one finds an offset of at least 5 m the whole search (every heading)
+              is made again against the panorama from that eye; that estimate, its margin taken there, is kept when it is
+              confident and agrees with the pose that found the offset.
 
             ## Benchmark
 
@@ -185,7 +189,11 @@ public final class OrientationReport {
         int photos = 100;
         long seed = 1;
         java.util.Set<Integer> only = java.util.Set.of();
-        for (int i = 0; i + 1 < args.length; i += 2) {
+        for (int i = 0; i < args.length; i += 2) {
+            if (i + 1 == args.length) {
+                throw new IllegalArgumentException("usage: OrientationReport [--shared DIR] [--out DIR] [--photos N]"
+                        + " [--seed S] [--fine true|false] [--only I,J,...]; " + args[i] + " has no value");
+            }
             switch (args[i]) {
                 case "--shared" -> shared = Path.of(args[i + 1]);
                 case "--out" -> out = Path.of(args[i + 1]);
@@ -343,7 +351,9 @@ public final class OrientationReport {
                 + " with the altitude pinned at the assumed eye and refined as the photo command does"
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
-                + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better)."
+                + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better;"
+                + " an unsure estimate's best and second-best poses are tried so, and the whole search is made again from an"
+                + " eye found at least 5 m off, kept when it is confident there)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
                 ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,
                 OrientationEstimator.ALTITUDE_SIGNIFICANCE));
@@ -380,6 +390,15 @@ public final class OrientationReport {
                     return String.format(Locale.ROOT, "skyline %s 1 km: %d of %d photos, median %.1f m, median standard error %.1f m",
                             isFar ? "≥" : "<", a.length, rs.size(), median(a), median(sig));
                 }).collect(java.util.stream.Collectors.joining("; "))));
+        double[] z = rows.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres()))
+                .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES) / r.free().altitudeSigmaMetres())
+                .toArray();
+        long within2 = Arrays.stream(z).filter(v -> v <= 2).count(), off5 = rows.stream()
+                .filter(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES) > 5).count();
+        b.append(String.format(Locale.ROOT, "%nThe standard error is formal (from the fit's residuals, at least %.1f px each):"
+                        + " %d of %d kept offsets are within 2 standard errors of the truth (median |error| / standard error %.2f;"
+                        + " 0.67 if it were a calibrated normal one), and %d are more than 5 m off.%n",
+                OrientationEstimator.ALTITUDE_RESIDUAL_FLOOR_PX, within2, z.length, median(z), off5));
         return b.toString();
     }
 

@@ -33,10 +33,12 @@ package dempano.orient;
  * @param seconds           time spent matching (not rendering), seconds
  * @param altitudeOffsetMetres how much higher the eye was than assumed, metres, as the skyline's distances tell it
  *                          (a near ridge moves against a far one as the eye rises); NaN where not estimated: the
- *                          altitude pinned, the estimate unsure, or the offset not constrained (its standard error
- *                          above {@link OrientationEstimator#ALTITUDE_SIGMA_MAX_METRES}). When given, the pose and
- *                          the residual, share and score are those of the pose fitted with it; the margin and the
- *                          unsure flag still compare headings without it
+ *                          altitude pinned, the offset not constrained (its standard error above
+ *                          {@link OrientationEstimator#ALTITUDE_SIGMA_MAX_METRES}) or not significant, or the estimate
+ *                          unsure from every eye tried. When given, the pose and the residual, share and score are
+ *                          those of the pose fitted with it; the margin and the unsure flag compare headings at the
+ *                          assumed eye when the estimate was confident there, else at the eye found (see
+ *                          {@link OrientationEstimator#withAltitude})
  * @param altitudeSigmaMetres the offset's standard error, metres (from the fit's residuals, at least
  *                          {@link OrientationEstimator#ALTITUDE_RESIDUAL_FLOOR_PX} px each); NaN where not estimated
  */

@@ -316,32 +316,93 @@ public final class OrientationEstimator {
      * renders, until a step is under {@link #ALTITUDE_STEP_METRES}). A render, not the first-order profile, decides:
      * raising the eye also shows terrain a near slope hid. The offset is kept when the pose fits the skyline better
      * with it, its standard error is at most {@link #ALTITUDE_SIGMA_MAX_METRES} and it is at least
-     * {@link #ALTITUDE_SIGNIFICANCE} standard errors from 0; else the estimate is returned as it was. An unsure estimate is returned as it was (its pose is not trusted enough to measure the altitude by).
+     * {@link #ALTITUDE_SIGNIFICANCE} standard errors from 0; else the estimate is returned as it was.
+     *
+     * <p>A confident estimate keeps its margin and flag (taken at the eye assumed). An unsure one may be unsure
+     * because the eye is wrong (a near ridge that does not fit at any heading): its best and its second-best pose are
+     * each refined so, and where one of them finds an offset (of at least {@link #UNSURE_ALTITUDE_MIN_METRES}),
+     * the whole estimate is made again against the reference
+     * from that eye (every heading searched, the margin taken there); it is kept when that estimate is confident and
+     * agrees with the pose found, else the unsure estimate is returned as it was.
      *
      * @param e      the estimate from {@link #estimate}, against {@code at0}
      * @param raised renders the reference from a raised eye
      */
     public static OrientationEstimate withAltitude(OrientationEstimate e, Skyline sky, PhotoEdges edges, Reference at0,
                                                    RaisedReference raised, OrientationPriors priors) {
-        if (e.unsure() || !at0.profile().hasDistances()) {
+        if (!at0.profile().hasDistances()) {
             return e;
         }
         long t0 = System.nanoTime();
         int w = sky.widthPx(), h = sky.heightPx();
         Samples fine = Samples.of(sky, FINE_SAMPLES);
+        if (e.unsure()) {
+            List<OrientationEstimate.Pose> starts = new ArrayList<>(List.of(e.pose()));
+            if (e.second() != null) {
+                starts.add(e.second());
+            }
+            for (OrientationEstimate.Pose start : starts) {
+                AltitudeFit a = altitudeFit(start, sky, at0, raised, priors, UNSURE_ALTITUDE_MIN_METRES);
+                if (a == null) {
+                    continue;
+                }
+                OrientationEstimate again = estimate(sky, edges, a.reference().profile(), a.reference().field(), priors);
+                if (!again.unsure() && headingGap(again.headingDeg(), a.pose().headingDeg()) <= DISTINCT_HEADING_DEG) {
+                    return new OrientationEstimate(again.headingDeg(), again.pitchDeg(), again.rollDeg(), again.hfovDeg(),
+                            again.residualPx(), again.inlierShare(), again.score(), again.edgeScore(), again.second(),
+                            again.marginScore(), false, again.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9,
+                            a.offsetMetres(), a.sigmaMetres());
+                }
+            }
+            return e;
+        }
+        AltitudeFit a = altitudeFit(e.pose(), sky, at0, raised, priors, 0);
+        if (a == null) {
+            return e;
+        }
+        // The final pose against the raised reference, skyline and edges, as the estimate's own was refined.
+        Reference ref = a.reference();
+        Target target = Target.of(fine, edges, ref.field(), priors.lens());
+        Hypothesis best = refine(a.pose(), target, w, h, ref.profile(), priors);
+        Fit fit = Fit.of(best, target, w, h, ref.profile());
+        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), e.second(), e.marginScore(),
+                e.unsure(), e.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9, a.offsetMetres(), a.sigmaMetres());
+    }
+
+    /**
+     * Smallest offset, metres, for which an unsure estimate is searched again from another eye: at the assumed eye,
+     * unsure benchmark photos proposed −1.7 … +3.0 m (a near slope's cells, not the eye), and the search made again
+     * from there never made one sure while it cost 1.3–1.9 s each; 25 m too low, the first step proposes 15 m or more.
+     */
+    public static final double UNSURE_ALTITUDE_MIN_METRES = 5;
+
+    /** An altitude offset found from a pose: the pose refined with it (skyline only), and the reference seen from there. */
+    record AltitudeFit(Hypothesis pose, double offsetMetres, double sigmaMetres, Reference reference) {
+    }
+
+    /**
+     * The iteration of {@link #withAltitude} from one pose: null where the skyline does not constrain the altitude,
+     * the offset is not significant, does not fit better or the renderer refuses the eye, or where the first step
+     * proposes less than {@code minMetres} (before any render).
+     */
+    static AltitudeFit altitudeFit(OrientationEstimate.Pose start, Skyline sky, Reference at0, RaisedReference raised,
+                                   OrientationPriors priors, double minMetres) {
+        int w = sky.widthPx(), h = sky.heightPx();
+        Samples fine = Samples.of(sky, FINE_SAMPLES);
         Target skyOnly = Target.of(fine, PhotoEdges.NONE, null, priors.lens());
-        Hypothesis pose = new Hypothesis(e.headingDeg(), e.pitchDeg(), e.rollDeg(), e.hfovDeg(), Double.NaN);
+        Hypothesis pose = new Hypothesis(start.headingDeg(), start.pitchDeg(), start.rollDeg(), start.hfovDeg(), Double.NaN);
         double before = score(residualsPx(pose, fine, w, h, at0.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
         double offset = 0, sigma = Double.NaN, previous = Double.NaN;
         Reference ref = at0;
         for (int renders = 0; renders < ALTITUDE_RENDERS; renders++) {
             double[] step = altitudeStep(pose, skyOnly, w, h, ref.profile(), priors);
             if (step == null) {
-                return e; // not constrained
+                return null; // not constrained
             }
             sigma = step[1];
-            if (renders == 0 && Math.abs(step[0]) < ALTITUDE_SIGNIFICANCE * sigma) {
-                return e; // no offset the skyline tells apart from none
+            if (renders == 0 && (Math.abs(step[0]) < ALTITUDE_SIGNIFICANCE * sigma || Math.abs(step[0]) < minMetres)) {
+                return null; // no offset the skyline tells apart from none, or too small to look for
             }
             if (Math.abs(step[0]) < ALTITUDE_STEP_METRES) {
                 break;
@@ -354,21 +415,15 @@ public final class OrientationEstimator {
             try {
                 ref = raised.at(offset);
             } catch (IllegalArgumentException refused) {
-                return e; // an eye the renderer refuses (below the DEM's surface): left at the altitude assumed
+                return null; // an eye the renderer refuses (below the DEM's surface): left at the altitude assumed
             }
             pose = refine(pose, skyOnly, w, h, ref.profile(), priors);
         }
         double after = score(residualsPx(pose, fine, w, h, ref.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
         if (!(Math.abs(offset) >= ALTITUDE_SIGNIFICANCE * sigma) || !(after < before) || !(sigma <= ALTITUDE_SIGMA_MAX_METRES)) {
-            return e;
+            return null;
         }
-        // The final pose against the raised reference, skyline and edges, as the estimate's own was refined.
-        Target target = Target.of(fine, edges, ref.field(), priors.lens());
-        Hypothesis best = refine(pose, target, w, h, ref.profile(), priors);
-        Fit fit = Fit.of(best, target, w, h, ref.profile());
-        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
-                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), e.second(), e.marginScore(),
-                e.unsure(), e.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9, offset, sigma);
+        return new AltitudeFit(pose, offset, sigma, ref);
     }
 
     /**
@@ -1134,3 +1189,5 @@ public final class OrientationEstimator {
         return x;
     }
 }
+
+

@@ -29,23 +29,32 @@ class AltitudeRefinementTest {
 
     /** Skyline elevation, degrees, seen from an eye {@code raised} metres above the assumed one. */
     static DoubleUnaryOperator horizon(double raised) {
-        return az -> Math.toDegrees(Math.max(Math.atan2(nearHeight(az) - raised, NEAR_METRES),
-                Math.atan2(farHeight(az) - raised, FAR_METRES)));
+        return horizon(AltitudeRefinementTest::nearHeight, AltitudeRefinementTest::farHeight, raised);
+    }
+
+    static DoubleUnaryOperator horizon(DoubleUnaryOperator near, DoubleUnaryOperator far, double raised) {
+        return az -> Math.toDegrees(Math.max(Math.atan2(near.applyAsDouble(az) - raised, NEAR_METRES),
+                Math.atan2(far.applyAsDouble(az) - raised, FAR_METRES)));
     }
 
     /** The reference as a 10 px/° panorama renders it from that eye: rows 0.1° apart, the skyline's distance per column. */
     static OrientationEstimator.Reference reference(double raised, boolean farOnly) {
+        return reference(AltitudeRefinementTest::nearHeight, AltitudeRefinementTest::farHeight, raised, farOnly);
+    }
+
+    static OrientationEstimator.Reference reference(DoubleUnaryOperator nearHeight, DoubleUnaryOperator farHeight,
+                                                    double raised, boolean farOnly) {
         double ppd = 10, top = 45;
         int n = 3600;
         double[] el = new double[n], d = new double[n];
         for (int c = 0; c < n; c++) {
             double az = (c + 0.5) / ppd;
-            double near = Math.atan2(nearHeight(az) - raised, NEAR_METRES), far = Math.atan2(farHeight(az) - raised, FAR_METRES);
+            double nh = nearHeight.applyAsDouble(az), fh = farHeight.applyAsDouble(az);
+            double near = Math.atan2(nh - raised, NEAR_METRES), far = Math.atan2(fh - raised, FAR_METRES);
             double e = Math.toDegrees(farOnly ? far : Math.max(near, far));
             int r = (int) Math.ceil((top - e) * ppd - 0.5);
             el[c] = top - r / ppd;
-            d[c] = !farOnly && near > far ? Math.hypot(NEAR_METRES, nearHeight(az) - raised)
-                    : Math.hypot(FAR_METRES, farHeight(az) - raised);
+            d[c] = !farOnly && near > far ? Math.hypot(NEAR_METRES, nh - raised) : Math.hypot(FAR_METRES, fh - raised);
         }
         return new OrientationEstimator.Reference(new HorizonProfile(el, d, ppd), null);
     }
@@ -74,6 +83,54 @@ class AltitudeRefinementTest {
         assertTrue(Math.abs(pinned.pitchDeg() - pitch) > 0.1 || OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 0.1
                 || Math.abs(pinned.hfovDeg() - hfov) > 0.01 * hfov, what);
         assertTrue(renders[0] >= 1 && renders[0] <= OrientationEstimator.ALTITUDE_RENDERS, "renders " + renders[0]);
+    }
+
+    @Test
+    void anEstimateUnsureBecauseTheEyeIsWrongIsMadeAgainFromTheEyeFound() {
+        // 30 m higher than assumed: at the assumed eye no heading fits the near ridge and the far range together
+        // (the best 0.7° off, margin under the threshold); from the eye the best pose proposes, the whole search is
+        // made again and is confident.
+        double heading = 77.7, truth = 30;
+        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure(), pinned.summary());
+        assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 0.3, pinned.summary());
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
+                m -> reference(m, false), priors);
+        String what = e.summary() + " (altitude pinned: " + pinned.summary() + ")";
+        assertFalse(e.unsure(), what);
+        assertEquals(truth, e.altitudeOffsetMetres(), 3, what);
+        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
+        assertTrue(e.marginScore() >= OrientationEstimator.UNSURE_MARGIN, what);
+        assertTrue(e.second() != null && OrientationEstimator.headingGap(e.secondHeadingDeg(), heading)
+                > OrientationEstimator.DISTINCT_HEADING_DEG, what);
+    }
+
+    @Test
+    void aSkylineThatRepeatsStaysUnsureFromAnyEye() {
+        // Both ridges repeat every 120°: three headings fit equally from every eye, so a better altitude cannot make
+        // the estimate sure, whether the eye was right or 30 m off.
+        DoubleUnaryOperator near = az -> 200 + 80 * Math.sin(Math.toRadians(3 * az)) + 40 * Math.sin(Math.toRadians(9 * az) + 1),
+                far = az -> 1800 + 400 * Math.sin(Math.toRadians(6 * az) + 0.4) + 250 * Math.sin(Math.toRadians(21 * az) + 2.1);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(near, far, 0, false);
+        for (double truth : new double[] {0, 30, 45}) {
+            Skyline sky = SyntheticSkyline.project(horizon(near, far, truth), W, H, new CameraOrientation(40, 2, -1.5), 55);
+            OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+            assertTrue(pinned.unsure(), pinned.summary());
+            // From 30 and 45 m up the altitude itself is found (within 3 m): only the heading stays open.
+            OrientationEstimator.AltitudeFit fit = OrientationEstimator.altitudeFit(pinned.pose(), sky, at0,
+                    m -> reference(near, far, m, false), priors, OrientationEstimator.UNSURE_ALTITUDE_MIN_METRES);
+            assertEquals(truth == 0, fit == null, "eye " + truth + " m up: " + fit);
+            if (fit != null) {
+                assertEquals(truth, fit.offsetMetres(), 3, fit.toString());
+            }
+            OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
+                    m -> reference(near, far, m, false), priors);
+            assertSame(pinned, e, "eye " + truth + " m up: " + e.summary());
+        }
     }
 
     @Test
