@@ -153,9 +153,9 @@ public final class OrientationReport {
               from 0 and the skyline fits better;
               `altitudeOffsetMetres` ± `altitudeSigmaMetres` in `P-orientation.json`, and the photo's own render uses it.
               The margin and the unsure flag of a confident estimate still compare headings at the assumed eye. An unsure
-              estimate may be unsure because the eye is wrong (a near ridge fits at no heading): its best and second-best
-              poses are each refined with the altitude so, and where one finds an offset of at least 5 m the whole search (every heading)
-              is made again against the panorama from that eye; that estimate, its margin taken there, is kept when it is
+              estimate may be unsure because the eye is wrong (a near ridge fits at no heading): its best pose (where
+              that finds none, its second-best) is refined with the altitude so, and at the first offset of at least 5 m the
+              whole search (every heading) is made again, once, against the panorama from that eye; that estimate, its margin taken there, is kept when it is
               confident and agrees with the pose that found the offset.
 
             ## Benchmark
@@ -352,7 +352,7 @@ public final class OrientationReport {
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
                 + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better;"
-                + " an unsure estimate's best and second-best poses are tried so, and the whole search is made again from an"
+                + " an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
                 + " eye found at least 5 m off, kept when it is confident there)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
                 ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,

@@ -319,11 +319,11 @@ public final class OrientationEstimator {
      * {@link #ALTITUDE_SIGNIFICANCE} standard errors from 0; else the estimate is returned as it was.
      *
      * <p>A confident estimate keeps its margin and flag (taken at the eye assumed). An unsure one may be unsure
-     * because the eye is wrong (a near ridge that does not fit at any heading): its best and its second-best pose are
-     * each refined so, and where one of them finds an offset (of at least {@link #UNSURE_ALTITUDE_MIN_METRES}),
-     * the whole estimate is made again against the reference
-     * from that eye (every heading searched, the margin taken there); it is kept when that estimate is confident and
-     * agrees with the pose found, else the unsure estimate is returned as it was.
+     * because the eye is wrong (a near ridge that does not fit at any heading): its best pose, and where that finds no offset its
+     * second-best, is refined so; at the first offset found (of at least {@link #UNSURE_ALTITUDE_MIN_METRES}) the whole
+     * estimate is made again against the reference from that eye (every heading searched, the margin taken there),
+     * once per photo; it is kept when that estimate is confident and agrees with the pose found, else the unsure
+     * estimate is returned as it was.
      *
      * @param e      the estimate from {@link #estimate}, against {@code at0}
      * @param raised renders the reference from a raised eye
@@ -353,6 +353,7 @@ public final class OrientationEstimator {
                             again.marginScore(), false, again.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9,
                             a.offsetMetres(), a.sigmaMetres());
                 }
+                break; // one search made again per photo: it covers every heading from that eye
             }
             return e;
         }
