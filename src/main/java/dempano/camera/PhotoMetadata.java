@@ -340,7 +340,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
     }
 
     /** A number for messages: 9 significant digits, no trailing zeros. */
-    static String num(double v) {
+    public static String num(double v) {
         if (!Double.isFinite(v)) {
             return Double.toString(v);
         }

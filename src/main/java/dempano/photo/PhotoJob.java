@@ -167,14 +167,15 @@ public final class PhotoJob {
         String orientationJson = null;
         if (open.any()) {
             PhotoOrientation.Result est;
+            // The range is a prior only around a heading that was given (override or metadata).
+            double headingRangeDeg = Double.isNaN(in.headingRangeDeg())
+                    || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size() ? Double.NaN : in.headingRangeDeg();
+            double priorHeadingDeg = camera.pose().orientation().headingDeg();
             try {
                 est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
                                 .withAltitudeMetres(camera.pose().altitudeMetres())
                                 .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                        photo, camera,
-                        // The range is a prior only around a heading that was given (override or metadata).
-                        Double.isNaN(in.headingRangeDeg()) || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size()
-                                ? Double.NaN : in.headingRangeDeg());
+                        photo, camera, headingRangeDeg);
             } catch (IllegalArgumentException e) {
                 List<String> missing = meta.missing(given);
                 throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
@@ -185,6 +186,11 @@ public final class PhotoJob {
             log.result(line);
             camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()));
             List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
+            if (!Double.isNaN(headingRangeDeg)) {
+                prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
+                        PhotoMetadata.num(headingRangeDeg), PhotoMetadata.num(priorHeadingDeg), Double.isNaN(given.headingDeg())
+                                ? "the photo's metadata" : PhotoOverrides.HEADING));
+            }
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
             orientationOverlay = est.overlay();
