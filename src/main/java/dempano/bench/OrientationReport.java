@@ -142,7 +142,8 @@ public final class OrientationReport {
             - Confidence: `residualPx` (RMS of the skyline residuals under 3 px), `inlierShare` (weighted share of skyline
               samples under 3 px), `score` (mean truncated residual / 3 px over skyline and edges: 0 perfect, 1 nothing
               fits), `edgeScore` (the same for the edge points alone), `marginScore` (score of the best other heading,
-              more than 2° away, minus the best score). %UNSURE_RULE%
+              more than 2° away, minus the best score; with a heading given or a prior, that other heading is searched over
+              all headings, so a negative margin says the skyline fits better outside the prior). %UNSURE_RULE%
             - Altitude (`OrientationEstimator.withAltitude`, where the altitude is not given by flag): the estimate is
               refined again with the eye's altitude. A near ridge moves against a far one as the eye rises (pitch moves
               both alike), so where the skyline's distances (`HorizonProfile` keeps each column's) constrain it, a fit of

@@ -26,8 +26,10 @@ package dempano.orient;
  *                          over the truncation, [0, 1] (texture edges keep it well above 0); NaN when no edges were
  *                          matched
  * @param second            the best other pose (heading more than {@link OrientationEstimator#DISTINCT_HEADING_DEG}
- *                          away, refined as the best was); null when there was none (a pinned or narrow prior)
- * @param marginScore       second score − best score; NaN when there was no other heading
+ *                          away, refined as the best was), searched over every heading even when a prior or a pinned
+ *                          heading restricts the estimate; null when there was none
+ * @param marginScore       second score − best score; NaN when there was no other heading; negative where a pinned
+ *                          heading or a prior holds a pose that fits worse than one outside it (unsure)
  * @param unsure            whether the match should not be trusted (see above)
  * @param samples           skyline samples used
  * @param seconds           time spent matching (not rendering), seconds

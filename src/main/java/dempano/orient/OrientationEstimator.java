@@ -245,7 +245,7 @@ public final class OrientationEstimator {
             refined.add(0, polish(refined.get(0), target, w, h, profile, priors));
             refined.sort(Comparator.comparingDouble(Hypothesis::score));
         }
-        HorizonProfile bestProfile = profile;
+        HorizonProfile panorama = profile, bestProfile = profile;
         if (camera != null) {
             List<Hypothesis> chosen = new ArrayList<>();
             for (Hypothesis r : refined) {
@@ -281,12 +281,31 @@ public final class OrientationEstimator {
         profile = bestProfile;
         Fit fit = Fit.of(best, target, w, h, profile);
         double margin = second == null ? Double.NaN : second.score() - best.score();
-        boolean unsure = isUnsure(fit.inlierShare(), best.score(), second == null ? Double.NaN : margin)
-                || onFovBound(best.hfovDeg(), priors);
+        OrientationEstimate.Pose secondPose = second == null ? null
+                : new OrientationEstimate.Pose(normalize360(second.headingDeg()), second.pitchDeg(), second.rollDeg(), second.hfovDeg());
+        if (!Double.isNaN(priors.headingDeg()) && priors.headingRangeDeg() < 180) {
+            // A prior restricts the answer, not the competition: a compass heading 8° off, pinned, fitted pitch, roll
+            // and FOV to the wrong skyline with half the samples "fitting". The best pose at any other heading says
+            // whether the photo's skyline agrees with the prior (a negative margin: it fits better elsewhere).
+            OrientationEstimate free = estimate(sky, edges, panorama, field,
+                    priors.withHeading(Double.NaN, 180), camera);
+            double otherScore = Double.NaN;
+            OrientationEstimate.Pose other = null;
+            if (headingGap(free.headingDeg(), best.headingDeg()) > DISTINCT_HEADING_DEG) {
+                other = free.pose();
+                otherScore = free.score();
+            } else if (free.second() != null && headingGap(free.secondHeadingDeg(), best.headingDeg()) > DISTINCT_HEADING_DEG) {
+                other = free.second();
+                otherScore = free.score() + free.marginScore();
+            }
+            if (other != null && !(otherScore - best.score() >= margin)) {
+                margin = otherScore - best.score();
+                secondPose = other;
+            }
+        }
+        boolean unsure = isUnsure(fit.inlierShare(), best.score(), margin) || onFovBound(best.hfovDeg(), priors);
         return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
-                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(),
-                second == null ? null : new OrientationEstimate.Pose(normalize360(second.headingDeg()), second.pitchDeg(),
-                        second.rollDeg(), second.hfovDeg()), margin, unsure, fine.size(),
+                fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), secondPose, margin, unsure, fine.size(),
                 (System.nanoTime() - t0) / 1e9, Double.NaN, Double.NaN);
     }
 

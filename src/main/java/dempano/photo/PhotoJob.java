@@ -11,6 +11,7 @@ import dempano.camera.PhotoMetadataException;
 import dempano.camera.PhotoOverrides;
 import dempano.io.CameraWriter;
 import dempano.io.OutputSet;
+import dempano.orient.OrientationEstimate;
 import dempano.orient.PhotoOrientation;
 import dempano.summits.SummitList;
 import dempano.summits.SummitProjector;
@@ -184,6 +185,15 @@ public final class PhotoJob {
             }
             String line = est.provenance(open);
             log.result(line);
+            OrientationEstimate e = est.estimate();
+            if (e.marginScore() < 0 && e.second() != null) {
+                // A heading pinned (or a prior) that the skyline contradicts: say where it fits, and how to search.
+                log.result(String.format(java.util.Locale.ROOT, "the skyline fits better at heading %.1f° than at %.1f°"
+                        + " (the heading given%s): %s", e.secondHeadingDeg(), e.headingDeg(), Double.isNaN(headingRangeDeg)
+                        ? "" : " ± " + PhotoMetadata.num(headingRangeDeg) + "°", open.heading()
+                        ? "widen --heading-range-deg, or check the position" : "give --heading-range-deg (e.g. 20) to search"
+                        + " around it, as for a compass"));
+            }
             camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()));
             List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
             if (!Double.isNaN(headingRangeDeg)) {

@@ -115,6 +115,29 @@ class OrientationEstimatorTest {
     }
 
     @Test
+    void aPinnedHeadingThatTheSkylineContradictsIsFlaggedUnsureWithTheHeadingItFits() {
+        // A compass 8° off, taken as the heading: pitch, roll and FOV fitted to it fit half the skyline, which the
+        // inlier rule alone passed. The best pose at any other heading fits far better: a negative margin, unsure.
+        HorizonProfile profile = SyntheticSkyline.profile(SyntheticSkyline::ridge, 10);
+        double truth = 77;
+        Skyline sky = SyntheticSkyline.project(SyntheticSkyline::ridge, W, H, new CameraOrientation(truth, 3, -1), 50);
+        OrientationEstimate wrong = OrientationEstimator.estimate(sky, profile, OrientationPriors.NONE.withHeading(truth + 8, 0));
+        assertEquals(truth + 8, wrong.headingDeg(), 1e-9);
+        assertTrue(wrong.unsure(), wrong.summary());
+        assertTrue(wrong.marginScore() < 0, wrong.summary());
+        assertEquals(truth, wrong.secondHeadingDeg(), 0.05, wrong.summary());
+        // Pinned where the skyline agrees, it stays confident: the best other heading fits far worse.
+        OrientationEstimate right = OrientationEstimator.estimate(sky, profile, OrientationPriors.NONE.withHeading(truth, 0));
+        assertFalse(right.unsure(), right.summary());
+        assertTrue(right.marginScore() >= OrientationEstimator.UNSURE_MARGIN, right.summary());
+        assertEquals(50, right.hfovDeg(), 0.25, right.summary());
+        // A prior of ± 5° that holds no heading the skyline fits: the estimate is the best within it, and unsure.
+        OrientationEstimate narrow = OrientationEstimator.estimate(sky, profile, OrientationPriors.NONE.withHeading(truth + 12, 5));
+        assertTrue(headingError(narrow, truth) > 3, narrow.summary());
+        assertTrue(narrow.unsure(), narrow.summary());
+    }
+
+    @Test
     void theCoarsePoolHoldsEveryFovBinAndTheTruthInItsOwn() {
         HorizonProfile profile = SyntheticSkyline.profile(SyntheticSkyline::ridge, 10);
         double truthHeading = 123.4, truthFov = 40;
