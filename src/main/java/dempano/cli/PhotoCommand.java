@@ -87,6 +87,9 @@ public final class PhotoCommand implements Callable<Integer> {
                         + " camera from flags alone");
             }
         }
+        if (headingRangeDeg != null && headingRangeDeg.isNaN()) {
+            throw new IllegalArgumentException("--heading-range-deg must be in (0°, 180°], got NaN");
+        }
         dempano.io.OutputSet.checkPrefix(out);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && out.startsWith("build/")) {

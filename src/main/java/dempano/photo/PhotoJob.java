@@ -67,6 +67,9 @@ public final class PhotoJob {
             Objects.requireNonNull(overrides, "overrides");
             Objects.requireNonNull(settings, "settings");
             Objects.requireNonNull(outPrefix, "outPrefix");
+            if (!Double.isNaN(headingRangeDeg) && !(headingRangeDeg > 0 && headingRangeDeg <= 180)) {
+                throw new IllegalArgumentException("--heading-range-deg must be in (0°, 180°], got " + headingRangeDeg);
+            }
         }
 
         /** A photo with its metadata and no overrides, heading as given, no summits. */
@@ -172,6 +175,10 @@ public final class PhotoJob {
             double headingRangeDeg = Double.isNaN(in.headingRangeDeg())
                     || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size() ? Double.NaN : in.headingRangeDeg();
             double priorHeadingDeg = camera.pose().orientation().headingDeg();
+            if (!Double.isNaN(in.headingRangeDeg()) && Double.isNaN(headingRangeDeg)) {
+                log.progress("--heading-range-deg " + PhotoMetadata.num(in.headingRangeDeg()) + " not used: no heading"
+                        + " (flag or EXIF compass) to search around; every heading is searched");
+            }
             try {
                 est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
                                 .withAltitudeMetres(camera.pose().altitudeMetres())

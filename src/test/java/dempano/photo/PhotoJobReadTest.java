@@ -14,7 +14,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Reading a photograph's pixels: whole, cut short, or in a format without a reader. */
+/** Reading a photograph's pixels (whole, cut short, or in a format without a reader), and the job's input checks. */
 class PhotoJobReadTest {
     @TempDir
     Path tmp;
@@ -54,5 +54,19 @@ class PhotoJobReadTest {
         assertThrows(IOException.class, () -> PhotoJob.readPixels(cut));
         Path text = Files.writeString(tmp.resolve("notes.heic"), "not an image the JDK reads");
         assertNull(PhotoJob.readPixels(text));
+    }
+
+    @Test
+    void aHeadingRangeOutsideZeroToHundredEightyDegreesIsRefusedBeforeAnythingIsRead() {
+        dempano.PanoramaRequest settings = dempano.PanoramaRequest.at(46.43, 8.09);
+        for (double bad : new double[] {-3, 0, 180.5, Double.POSITIVE_INFINITY}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new PhotoJob.Input(
+                    tmp.resolve("absent.jpg"), dempano.camera.PhotoOverrides.NONE, null, null, bad, settings, null, "x"));
+            assertTrue(e.getMessage().contains("--heading-range-deg"), e.getMessage());
+        }
+        for (double ok : new double[] {Double.NaN, 0.5, 180}) {
+            assertEquals(ok, new PhotoJob.Input(tmp.resolve("absent.jpg"), dempano.camera.PhotoOverrides.NONE, null, null,
+                    ok, settings, null, "x").headingRangeDeg(), 0);
+        }
     }
 }
