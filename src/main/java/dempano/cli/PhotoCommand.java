@@ -128,8 +128,31 @@ public final class PhotoCommand implements Callable<Integer> {
         return 0;
     }
 
+    private static void finite(String flag, Double v) {
+        if (v != null && !Double.isFinite(v)) {
+            throw new IllegalArgumentException(flag + " must be a finite number, got " + v);
+        }
+    }
+
     /** The camera values given as flags. */
     private PhotoOverrides overrides() {
+        // NaN means "not given" inside: a NaN typed on the command line must not silently become "estimate it".
+        finite(PhotoOverrides.LAT, latDeg);
+        finite(PhotoOverrides.LON, lonDeg);
+        finite(PhotoOverrides.ALTITUDE, altitudeMetres);
+        finite(PhotoOverrides.OFFSET, offsetMetres);
+        finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres);
+        finite(PhotoOverrides.HEADING, headingDeg);
+        finite(PhotoOverrides.DECLINATION, declinationDeg);
+        finite(PhotoOverrides.PITCH, pitchDeg);
+        finite(PhotoOverrides.ROLL, rollDeg);
+        finite(PhotoOverrides.FOCAL, focalMm);
+        finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm);
+        finite(PhotoOverrides.FOCAL35, focal35Mm);
+        finite(PhotoOverrides.HFOV, hfovDeg);
+        for (int i = 0; distortion != null && i < distortion.length; i++) {
+            finite("--distortion", distortion[i]);
+        }
         PhotoOverrides o = PhotoOverrides.NONE;
         if (latDeg != null || lonDeg != null) {
             o = o.withPosition(latDeg == null ? Double.NaN : latDeg, lonDeg == null ? Double.NaN : lonDeg);

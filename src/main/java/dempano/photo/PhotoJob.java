@@ -151,8 +151,13 @@ public final class PhotoJob {
                     null, List.of());
         }
         // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
-        PhotoOrientation open = photo == null ? new PhotoOrientation(false, false, false, false, false)
-                : PhotoOrientation.open(meta, o, !Double.isNaN(in.headingRangeDeg()));
+        PhotoOrientation open;
+        try {
+            open = photo == null ? new PhotoOrientation(false, false, false, false, false)
+                    : PhotoOrientation.open(meta, o, !Double.isNaN(in.headingRangeDeg()));
+        } catch (PhotoMetadataException e) { // a value out of range (a field of view of 0°), named with its file
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
         PhotoOverrides given = o;
         if (open.any()) {
             log.progress("estimating from the skyline: " + String.join(", ", open.names())

@@ -1,6 +1,7 @@
 package dempano.camera;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dempano.cli.Main;
@@ -132,5 +133,28 @@ class PhotoCliTest {
         assertEquals(2, noSize.exit(), noSize.err());
         assertTrue(noSize.err().contains("--width-px"), noSize.err());
         assertTrue(Files.notExists(tmp.resolve("x.png")));
+    }
+
+    @Test
+    void cameraFlagsOutOfRangeOrNotANumberAreClearErrorsNotEstimates() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).write(tmp, "plain.jpg", 64, 48);
+        String[][] cases = {
+            {"--hfov-deg", "0", "horizontal field of view must be in"},
+            {"--hfov-deg", "NaN", "--hfov-deg must be a finite number"},
+            {"--heading-deg", "NaN", "--heading-deg must be a finite number"},
+            {"--altitude-m", "Infinity", "--altitude-m must be a finite number"},
+            {"--focal35-mm", "-5", "35 mm-equivalent focal length must be positive"},
+            {"--heading-range-deg", "-3", "--heading-range-deg must be in"},
+        };
+        for (String[] c : cases) {
+            Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("y").toString(), c[0], c[1]);
+            String what = String.join(" ", c) + ": " + r.err();
+            assertEquals(2, r.exit(), what);
+            assertTrue(r.err().contains(c[2]), what);
+            assertFalse(r.err().contains("Exception") || r.err().contains("\tat "), what);
+        }
+        assertTrue(Files.notExists(tmp.resolve("y.png")));
     }
 }
