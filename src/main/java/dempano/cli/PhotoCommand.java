@@ -128,46 +128,35 @@ public final class PhotoCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void finite(String flag, Double v) {
-        if (v != null && !Double.isFinite(v)) {
+    private static double finite(String flag, Double v) {
+        if (!Double.isFinite(v)) {
             throw new IllegalArgumentException(flag + " must be a finite number, got " + v);
         }
+        return v;
     }
 
     /** The camera values given as flags. */
     private PhotoOverrides overrides() {
         // NaN means "not given" inside: a NaN typed on the command line must not silently become "estimate it".
-        finite(PhotoOverrides.LAT, latDeg);
-        finite(PhotoOverrides.LON, lonDeg);
-        finite(PhotoOverrides.ALTITUDE, altitudeMetres);
-        finite(PhotoOverrides.OFFSET, offsetMetres);
-        finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres);
-        finite(PhotoOverrides.HEADING, headingDeg);
-        finite(PhotoOverrides.DECLINATION, declinationDeg);
-        finite(PhotoOverrides.PITCH, pitchDeg);
-        finite(PhotoOverrides.ROLL, rollDeg);
-        finite(PhotoOverrides.FOCAL, focalMm);
-        finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm);
-        finite(PhotoOverrides.FOCAL35, focal35Mm);
-        finite(PhotoOverrides.HFOV, hfovDeg);
         for (int i = 0; distortion != null && i < distortion.length; i++) {
             finite("--distortion", distortion[i]);
         }
         PhotoOverrides o = PhotoOverrides.NONE;
         if (latDeg != null || lonDeg != null) {
-            o = o.withPosition(latDeg == null ? Double.NaN : latDeg, lonDeg == null ? Double.NaN : lonDeg);
+            o = o.withPosition(latDeg == null ? Double.NaN : finite(PhotoOverrides.LAT, latDeg),
+                    lonDeg == null ? Double.NaN : finite(PhotoOverrides.LON, lonDeg));
         }
-        o = altitudeMetres == null ? o : o.withAltitudeMetres(altitudeMetres);
-        o = offsetMetres == null ? o : o.withOffsetMetres(offsetMetres);
-        o = cameraHeightMetres == null ? o : o.withCameraHeightMetres(cameraHeightMetres);
-        o = headingDeg == null ? o : o.withHeadingDeg(headingDeg);
-        o = declinationDeg == null ? o : o.withDeclinationDeg(declinationDeg);
-        o = pitchDeg == null ? o : o.withPitchDeg(pitchDeg);
-        o = rollDeg == null ? o : o.withRollDeg(rollDeg);
-        o = focalMm == null ? o : o.withFocalLengthMm(focalMm);
-        o = sensorWidthMm == null ? o : o.withSensorWidthMm(sensorWidthMm);
-        o = focal35Mm == null ? o : o.withFocal35mmMm(focal35Mm);
-        o = hfovDeg == null ? o : o.withHorizontalFovDeg(hfovDeg);
+        o = altitudeMetres == null ? o : o.withAltitudeMetres(finite(PhotoOverrides.ALTITUDE, altitudeMetres));
+        o = offsetMetres == null ? o : o.withOffsetMetres(finite(PhotoOverrides.OFFSET, offsetMetres));
+        o = cameraHeightMetres == null ? o : o.withCameraHeightMetres(finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres));
+        o = headingDeg == null ? o : o.withHeadingDeg(finite(PhotoOverrides.HEADING, headingDeg));
+        o = declinationDeg == null ? o : o.withDeclinationDeg(finite(PhotoOverrides.DECLINATION, declinationDeg));
+        o = pitchDeg == null ? o : o.withPitchDeg(finite(PhotoOverrides.PITCH, pitchDeg));
+        o = rollDeg == null ? o : o.withRollDeg(finite(PhotoOverrides.ROLL, rollDeg));
+        o = focalMm == null ? o : o.withFocalLengthMm(finite(PhotoOverrides.FOCAL, focalMm));
+        o = sensorWidthMm == null ? o : o.withSensorWidthMm(finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm));
+        o = focal35Mm == null ? o : o.withFocal35mmMm(finite(PhotoOverrides.FOCAL35, focal35Mm));
+        o = hfovDeg == null ? o : o.withHorizontalFovDeg(finite(PhotoOverrides.HFOV, hfovDeg));
         if (distortion != null) {
             if (distortion.length != 5) {
                 throw new IllegalArgumentException("--distortion needs five numbers K1,K2,P1,P2,K3, got " + distortion.length);
