@@ -80,6 +80,15 @@ public record OrientationEstimate(double headingDeg, double pitchDeg, double rol
                 score, edgeScore, second, marginScore, unsure, samples, seconds, altitudeOffsetMetres, altitudeSigmaMetres);
     }
 
+    /**
+     * The same estimate with an eye's altitude offset and its standard error, metres, and the time spent matching in
+     * all, seconds.
+     */
+    public OrientationEstimate withAltitudeOffset(double metres, double sigmaMetres, double totalSeconds) {
+        return new OrientationEstimate(headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, inlierShare, score, edgeScore,
+                second, marginScore, unsure, samples, totalSeconds, metres, sigmaMetres);
+    }
+
     /** One line for a log. */
     public String summary() {
         return String.format(java.util.Locale.ROOT, "heading %.2f°, pitch %.2f°, roll %.2f°, hfov %.2f°;"

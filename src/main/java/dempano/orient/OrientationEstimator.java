@@ -353,8 +353,6 @@ public final class OrientationEstimator {
             return e;
         }
         long t0 = System.nanoTime();
-        int w = sky.widthPx(), h = sky.heightPx();
-        Samples fine = Samples.of(sky, FINE_SAMPLES);
         if (e.unsure()) {
             List<OrientationEstimate.Pose> starts = new ArrayList<>(List.of(e.pose()));
             if (e.second() != null) {
@@ -367,10 +365,8 @@ public final class OrientationEstimator {
                 }
                 OrientationEstimate again = estimate(sky, edges, a.reference().profile(), a.reference().field(), priors);
                 if (!again.unsure() && headingGap(again.headingDeg(), a.pose().headingDeg()) <= DISTINCT_HEADING_DEG) {
-                    return new OrientationEstimate(again.headingDeg(), again.pitchDeg(), again.rollDeg(), again.hfovDeg(),
-                            again.residualPx(), again.inlierShare(), again.score(), again.edgeScore(), again.second(),
-                            again.marginScore(), false, again.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9,
-                            a.offsetMetres(), a.sigmaMetres());
+                    return again.withAltitudeOffset(a.offsetMetres(), a.sigmaMetres(),
+                            e.seconds() + (System.nanoTime() - t0) / 1e9);
                 }
                 break; // one search made again per photo: it covers every heading from that eye
             }
@@ -381,8 +377,9 @@ public final class OrientationEstimator {
             return e;
         }
         // The final pose against the raised reference, skyline and edges, as the estimate's own was refined.
+        int w = sky.widthPx(), h = sky.heightPx();
         Reference ref = a.reference();
-        Target target = Target.of(fine, edges, ref.field(), priors.lens());
+        Target target = Target.of(a.samples(), edges, ref.field(), priors.lens());
         Hypothesis best = refine(a.pose(), target, w, h, ref.profile(), priors);
         Fit fit = Fit.of(best, target, w, h, ref.profile());
         return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
@@ -397,8 +394,11 @@ public final class OrientationEstimator {
      */
     public static final double UNSURE_ALTITUDE_MIN_METRES = 5;
 
-    /** An altitude offset found from a pose: the pose refined with it (skyline only), and the reference seen from there. */
-    record AltitudeFit(Hypothesis pose, double offsetMetres, double sigmaMetres, Reference reference) {
+    /**
+     * An altitude offset found from a pose: the pose refined with it (skyline only), the reference seen from there, and
+     * the skyline samples it was fitted on.
+     */
+    record AltitudeFit(Hypothesis pose, double offsetMetres, double sigmaMetres, Reference reference, Samples samples) {
     }
 
     /**
@@ -443,7 +443,7 @@ public final class OrientationEstimator {
         if (!(Math.abs(offset) >= ALTITUDE_SIGNIFICANCE * sigma) || !(after < before) || !(sigma <= ALTITUDE_SIGMA_MAX_METRES)) {
             return null;
         }
-        return new AltitudeFit(pose, offset, sigma, ref);
+        return new AltitudeFit(pose, offset, sigma, ref, fine);
     }
 
     /**

@@ -32,10 +32,15 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      */
     public static PhotoOrientation open(PhotoMetadata meta, PhotoOverrides o, boolean headingPrior) {
         int missing = meta.missing(o).size();
-        return new PhotoOrientation(headingPrior || meta.missing(o.withHeadingDeg(0)).size() < missing,
+        return new PhotoOrientation(headingPrior || !headingGiven(meta, o),
                 meta.missing(o.withPitchDeg(0)).size() < missing, meta.missing(o.withRollDeg(0)).size() < missing,
                 meta.missing(o.withHorizontalFovDeg(50)).size() < missing,
                 Double.isNaN(o.altitudeMetres()) && Double.isNaN(o.offsetMetres()));
+    }
+
+    /** Whether the overrides or the metadata give a heading (a flag, an EXIF compass, an XMP yaw). */
+    public static boolean headingGiven(PhotoMetadata meta, PhotoOverrides o) {
+        return meta.missing(o.withHeadingDeg(0)).size() == meta.missing(o).size();
     }
 
     /** Whether anything is estimated: one of the angles (the altitude is refined only with them). */
@@ -49,7 +54,7 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      */
     public PhotoOverrides placeholders(PhotoMetadata meta, PhotoOverrides o) {
         PhotoOverrides p = o;
-        p = heading && meta.missing(o.withHeadingDeg(0)).size() < meta.missing(o).size() ? p.withHeadingDeg(0) : p;
+        p = heading && !headingGiven(meta, o) ? p.withHeadingDeg(0) : p;
         p = pitch ? p.withPitchDeg(0) : p;
         p = roll ? p.withRollDeg(0) : p;
         return hfov ? p.withHorizontalFovDeg(50) : p;

@@ -177,8 +177,7 @@ public final class PhotoJob {
         if (open.any()) {
             PhotoOrientation.Result est;
             // The range is a prior only around a heading that was given (override or metadata).
-            double headingRangeDeg = Double.isNaN(in.headingRangeDeg())
-                    || meta.missing(given.withHeadingDeg(0)).size() < meta.missing(given).size() ? Double.NaN : in.headingRangeDeg();
+            double headingRangeDeg = PhotoOrientation.headingGiven(meta, given) ? in.headingRangeDeg() : Double.NaN;
             double priorHeadingDeg = camera.pose().orientation().headingDeg();
             if (!Double.isNaN(in.headingRangeDeg()) && Double.isNaN(headingRangeDeg)) {
                 log.progress("--heading-range-deg " + PhotoMetadata.num(in.headingRangeDeg()) + " not used: no heading"
