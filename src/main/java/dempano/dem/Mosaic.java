@@ -441,6 +441,30 @@ public final class Mosaic {
         return a + (b - a) * t;
     }
 
+    /**
+     * A slot of the mosaic's tile grid that it samples: the tile's id and the tile itself, or null where the slot
+     * is held at sea level (no tile, or an entirely void one).
+     */
+    public record TileSlot(TileId id, HgtTile tile) {
+    }
+
+    /**
+     * The slots this mosaic samples, north to south, west to east; slots the range did not need are left out.
+     * Tiles are immutable: a cache of values derived from the samples can tell by the tile objects (and their
+     * {@link HgtTile#contentHash()}) whether the heights it was made from are still those of the source.
+     */
+    public List<TileSlot> tileSlots() {
+        List<TileSlot> out = new ArrayList<>();
+        for (int r = 0; r < tilesNorthSouth; r++) {
+            for (int c = 0; c < tilesEastWest; c++) {
+                if (tiles[r][c] != null || seaLevel[r][c]) {
+                    out.add(new TileSlot(TileId.of(latSouthDeg + tilesNorthSouth - 1 - r, lonWestDeg + c), tiles[r][c]));
+                }
+            }
+        }
+        return out;
+    }
+
     /** Tiles read from the source, north to south, west to east. */
     public List<TileId> tilesUsed() {
         return tilesUsed;

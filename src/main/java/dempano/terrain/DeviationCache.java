@@ -12,8 +12,10 @@ import java.util.function.Function;
  * on a grid aligned to whole multiples of {@link TerrainBuilder#PATCH_INTERVALS} samples from 90°N
  * and 180°W, so the same patch has the same key whatever the viewpoint. Valid for one DEM source
  * only (the key holds no tile contents), whose neighbouring tiles agree on their shared edges (as
- * SRTM tiles do): which of two tiles supplies an edge sample depends on which are loaded. Bounded (least recently used entries go first) and
- * thread-safe.
+ * SRTM tiles do): which of two tiles supplies an edge sample depends on which are loaded. A tile whose
+ * heights change while the cache is in use (its file rewritten and read again) is noticed by
+ * {@link #forgetChanged}, which every build calls first: the entries of the patches within two samples of it
+ * are dropped and measured again. Bounded (least recently used entries go first) and thread-safe.
  */
 public final class DeviationCache {
     /** Default capacity, patches: a 5×5 block of SRTM1 tiles is about 80 000 (a few MB each 10 000). */
@@ -52,6 +54,26 @@ public final class DeviationCache {
                     found.accept(item, d);
                 }
             }
+        }
+    }
+
+    private final TileVersions versions = new TileVersions();
+
+    /**
+     * Drops the entries derived from heights that {@code mosaic}'s tiles no longer have: where a tile differs from
+     * the one this cache last saw under its id ({@link TileVersions}), every patch within two samples of it.
+     * Returns how many entries were dropped.
+     */
+    public int forgetChanged(dempano.dem.Mosaic mosaic) {
+        synchronized (map) {
+            List<dempano.dem.TileId> changed = versions.changed(mosaic);
+            int before = map.size();
+            if (!changed.isEmpty()) {
+                int n = mosaic.intervalsPerDegree();
+                map.keySet().removeIf(k -> k.intervalsPerDegree() == n && changed.stream()
+                        .anyMatch(t -> TileVersions.touches(t, n, k.globalRow(), k.globalCol())));
+            }
+            return before - map.size();
         }
     }
 

@@ -13,8 +13,9 @@ import java.util.Set;
  * vertices do not depend on the eye ({@link EyePlacement}), so a patch drawn again at the same
  * level with the same skirts is neither placed nor uploaded again. Least recently used first out
  * beyond a vertex budget; what leaves must have its buffers released by the caller (GL side
- * first). Belongs to one DEM source, like {@link DeviationCache}. Not thread-safe: one build and
- * render at a time.
+ * first). Belongs to one DEM source, like {@link DeviationCache}, and like it forgets the patches near a tile
+ * whose heights changed ({@link #forgetChanged}, called first by every build). Not thread-safe: one build
+ * and render at a time.
  */
 public final class MeshCache {
     /** Default budget: about 3 million vertices (about 200 MB of vertex data, held in memory and by GL). */
@@ -71,6 +72,34 @@ public final class MeshCache {
             vertices -= e.getValue().vertices();
             dropped.add(e.getValue().geometry());
             it.remove();
+        }
+        return dropped;
+    }
+
+    private final TileVersions versions = new TileVersions();
+
+    /**
+     * Removes the geometries built from heights that {@code mosaic}'s tiles no longer have: where a tile differs
+     * from the one this cache last saw under its id ({@link TileVersions}), every patch within two samples of it.
+     * Returns the geometries removed, whose buffers the caller releases.
+     */
+    public List<Geometry> forgetChanged(dempano.dem.Mosaic mosaic) {
+        List<dempano.dem.TileId> changed = versions.changed(mosaic);
+        List<Geometry> dropped = new ArrayList<>();
+        if (changed.isEmpty()) {
+            return dropped;
+        }
+        int n = mosaic.intervalsPerDegree();
+        Iterator<Map.Entry<Key, Entry>> it = map.entrySet().iterator();
+        while (it.hasNext()) {
+            Map.Entry<Key, Entry> e = it.next();
+            Key k = e.getKey();
+            if (k.intervalsPerDegree() == n && changed.stream()
+                    .anyMatch(t -> TileVersions.touches(t, n, k.globalRow(), k.globalCol()))) {
+                vertices -= e.getValue().vertices();
+                dropped.add(e.getValue().geometry());
+                it.remove();
+            }
         }
         return dropped;
     }

@@ -223,6 +223,11 @@ public final class TerrainBuilder {
         double exaggeration = detail.exaggeration(), cullBelowDeg = detail.cullBelowDeg();
         DeviationCache cache = detail.cache();
         MeshCache meshes = detail.meshes();
+        // Nothing derived from heights a tile no longer has is served (a tile file rewritten since the last build).
+        if (cache != null) {
+            cache.forgetChanged(mosaic);
+        }
+        List<Geometry> stale = meshes == null ? List.of() : meshes.forgetChanged(mosaic);
         LocalFrame frame = eye.eyeFrame();
         double eyeRow = mosaic.rowOf(eye.latDeg()), eyeCol = mosaic.colOf(eye.lonDeg());
         // Cells of the mosaic that can lie within range (a generous box; exact cut later). Rows are
@@ -444,7 +449,10 @@ public final class TerrainBuilder {
             drawn.get(g).addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int,
                     VERTEX_BASE, bases[g]));
         }
-        List<Geometry> evicted = meshes == null ? List.of() : meshes.trim(inUse);
+        List<Geometry> evicted = new ArrayList<>(stale);
+        if (meshes != null) {
+            evicted.addAll(meshes.trim(inUse));
+        }
         root.updateGeometricState();
         return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
                 transientParts, evicted, List.copyOf(drawn));
