@@ -51,6 +51,24 @@ public final class Synthetic {
         return new InMemoryDem("synthetic", tiles);
     }
 
+    /**
+     * Writes an SRTM3 file (1201 × 1201 big-endian int16, whole metres) of the tile with south-west corner
+     * (latS, lonW), sampled from f(lat, lon) in metres; returns the file.
+     */
+    public static java.nio.file.Path writeHgt(java.nio.file.Path dir, DoubleBinaryOperator f, int latS, int lonW)
+            throws java.io.IOException {
+        int n = 1201;
+        java.nio.ByteBuffer bytes = java.nio.ByteBuffer.allocate(2 * n * n);
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                bytes.putShort((short) Math.round(f.applyAsDouble(latS + 1 - r / (n - 1.0), lonW + c / (n - 1.0))));
+            }
+        }
+        java.nio.file.Path file = dir.resolve(TileId.of(latS, lonW).name() + ".hgt");
+        java.nio.file.Files.write(file, bytes.array());
+        return file;
+    }
+
     /** All tiles of a block of rows × cols from (latS, lonW), wrapping longitude at ±180. */
     public static int[][] block(int latS, int lonW, int rows, int cols) {
         int[][] out = new int[rows * cols][];

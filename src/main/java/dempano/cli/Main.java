@@ -72,22 +72,95 @@ public final class Main implements Callable<Integer> {
     Double clearViewMetres;
 
     public static void main(String[] args) {
+        // DEMPANO_RESIDENT=on: a panorama is rendered by this user's resident process for this installation (started
+        // if none runs), which keeps the GL context, tiles and meshes warm; anything else, or no resident process to
+        // be had, runs here. Decided before picocli is loaded: the client stays a small, quick JVM.
+        if (ResidentClient.wanted(System.getenv()) && ResidentClient.serves(args)) {
+            int code = ResidentClient.run(args);
+            if (code != ResidentClient.NOT_SERVED) {
+                System.exit(code);
+            }
+        }
         System.exit(run(args));
     }
 
     /** Runs the CLI and returns the exit code (for tests). */
     public static int run(String... args) {
+        return run(null, Renderers.PER_RUN, args);
+    }
+
+    /**
+     * Runs the CLI with relative paths taken from {@code workingDir} (null: the process's own) and the panorama's
+     * renderer from {@code renderers}; returns the exit code. The resident process's way in.
+     */
+    static int run(Path workingDir, Renderers renderers, String... args) {
         try {
-            return commandLine(args).execute(args);
+            return commandLine(workingDir, renderers, args).execute(args);
         } catch (OutOfMemoryError e) {
             // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
+            renderers.failed(e);
             System.err.println("dempano: " + outOfMemoryMessage(e));
             return 1;
         }
     }
 
+    /** Where relative paths of the options lead (null: the process's working directory, as given). */
+    private Path workingDir;
+    /** Where the panorama's renderer comes from. */
+    private Renderers renderers = Renderers.PER_RUN;
+
+    /** Files named as the user named their prefix: relative to the working directory where {@code --out} was. */
+    private List<Path> asGiven(List<Path> files) {
+        if (workingDir == null || Path.of(out).isAbsolute()) {
+            return files;
+        }
+        return files.stream().map(f -> f.startsWith(workingDir) ? workingDir.relativize(f) : f).toList();
+    }
+
+    /** A path option resolved against the working directory (unchanged when it is the process's own). */
+    private Path resolve(Path p) {
+        return workingDir == null || p == null ? p : workingDir.resolve(p);
+    }
+
+    /**
+     * Where a panorama's renderer comes from: opened for the run and closed after it (the CLI), or kept open
+     * from run to run (the resident process, {@link ResidentServer}).
+     */
+    interface Renderers {
+        /** A renderer for {@code dem}; closing the lease ends what the run alone needed. */
+        Lease lease(dempano.dem.DemSource dem, boolean reference, int repeat);
+
+        /** Told of a run's failure (before it is reported), e.g. to give up a renderer that cannot draw. */
+        default void failed(Throwable t) {
+        }
+
+        /** A renderer for the length of one run. */
+        interface Lease extends AutoCloseable {
+            PanoramaRenderer renderer();
+
+            @Override
+            void close();
+        }
+
+        /** Opened for each run, closed after it. */
+        Renderers PER_RUN = (dem, reference, repeat) -> {
+            PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : openGl(dem, repeat);
+            return new Lease() {
+                @Override
+                public PanoramaRenderer renderer() {
+                    return r;
+                }
+
+                @Override
+                public void close() {
+                    r.close();
+                }
+            };
+        };
+    }
+
     /** The subcommands' names (picocli builds each one's model, by reflection, when it is added). */
-    static final List<String> SUBCOMMANDS = List.of("fly", "photo", "batch");
+    static final List<String> SUBCOMMANDS = List.of("fly", "photo", "batch", ResidentCommand.NAME);
 
     /**
      * Whether the arguments may name a subcommand or ask for help (which lists them): any argument equal to a
@@ -116,12 +189,16 @@ public final class Main implements Callable<Integer> {
         return repeat == 1 ? r.withoutMeshCache() : r;
     }
 
-    private static CommandLine commandLine(String... args) {
-        CommandLine cl = new CommandLine(new Main());
+    private static CommandLine commandLine(Path workingDir, Renderers renderers, String... args) {
+        Main main = new Main();
+        main.workingDir = workingDir;
+        main.renderers = renderers;
+        CommandLine cl = new CommandLine(main);
         if (needsSubcommands(args)) {
             cl.addSubcommand("fly", new FlyCommand());
             cl.addSubcommand("photo", new PhotoCommand());
             cl.addSubcommand("batch", new BatchCommand());
+            cl.addSubcommand(ResidentCommand.NAME, new ResidentCommand());
         }
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
@@ -130,6 +207,7 @@ public final class Main implements Callable<Integer> {
             return 2;
         });
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {
+            renderers.failed(ex);
             PrintWriter err = c.getErr();
             if (ex instanceof IllegalArgumentException) {
                 err.println("dempano: " + ex.getMessage());
@@ -165,7 +243,9 @@ public final class Main implements Callable<Integer> {
         if (!demo && noDem) {
             throw new IllegalArgumentException("--dem-dir is needed with --lat/--lon");
         }
-        List<Path> dirs = demo ? List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
+        List<Path> dirs = demo ? List.of(DemoTerrain.ensure(resolve(DemoTerrain.DEFAULT_DIR)))
+                : demDirs.stream().map(this::resolve).toList();
+        Path summitsFile = resolve(this.summitsFile);
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         Set<Layer> wanted = panorama.layers();
         PanoramaRequest req = panorama.applyTo(PanoramaRequest.at(lat, lon), demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES)
@@ -173,8 +253,9 @@ public final class Main implements Callable<Integer> {
                 .withSnapToSummitMetres(snapToSummitMetres == null ? Double.NaN : snapToSummitMetres)
                 .withClearViewMetres(clearViewMetres == null ? Double.NaN : clearViewMetres);
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
+        String out = workingDir == null ? this.out : resolve(Path.of(this.out)).toString();
         Path outParent = Path.of(out).toAbsolutePath().getParent();
-        if (outParent != null && out.startsWith("build/")) {
+        if (outParent != null && this.out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
         }
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(dirs, panorama.demFill(),
@@ -224,7 +305,8 @@ public final class Main implements Callable<Integer> {
             java.util.List<String> table = new java.util.ArrayList<>();
             // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
             // name is printed when the views are drawn (asking for it sooner would wait for the context).
-            try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : openGl(dem, repeat)) {
+            try (Renderers.Lease lease = renderers.lease(dem, reference, repeat)) {
+                PanoramaRenderer r = lease.renderer();
                 boolean[] named = {false};
                 if (reference) {
                     System.err.println("  renderer: " + r.glRenderer());
@@ -266,7 +348,7 @@ public final class Main implements Callable<Integer> {
                         sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
             }
         }
-        System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, files);
+        System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, asGiven(files));
         System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms, writing %.0f ms%n",
                 p.metadata().eyeAltitudeMetres(), p.metadata().groundElevationMetres(), p.widthPx(), p.heightPx(),
                 p.metadata().timingsMillis(), writingMillis);

@@ -73,19 +73,10 @@ class ChangedTileRenderTest {
         assertEquals(fresh.metadata().terrainTriangles(), after.metadata().terrainTriangles());
     }
 
-    /** An SRTM3 file of RUGGED plus a bump (big-endian int16, 1201 × 1201). */
-    private static void writeTile(java.nio.file.Path file, double bumpMetres) throws java.io.IOException {
-        int n = 1201;
-        java.nio.ByteBuffer bytes = java.nio.ByteBuffer.allocate(2 * n * n);
-        for (int r = 0; r < n; r++) {
-            for (int c = 0; c < n; c++) {
-                double lat = 47 - r / (n - 1.0), lon = 8 + c / (n - 1.0);
-                double h = LevelOfDetailRenderTest.RUGGED.applyAsDouble(lat, lon)
-                        + (lat > 46.55 && lat < 46.58 && lon > 8.55 && lon < 8.60 ? bumpMetres : 0);
-                bytes.putShort((short) Math.round(h));
-            }
-        }
-        java.nio.file.Files.write(file, bytes.array());
+    /** An SRTM3 file of RUGGED plus a bump. */
+    private static void writeTile(java.nio.file.Path dir, double bumpMetres) throws java.io.IOException {
+        Synthetic.writeHgt(dir, (lat, lon) -> LevelOfDetailRenderTest.RUGGED.applyAsDouble(lat, lon)
+                + (lat > 46.55 && lat < 46.58 && lon > 8.55 && lon < 8.60 ? bumpMetres : 0), 46, 8);
     }
 
     /** The user's case: a renderer open on a folder whose tile file is rewritten between two renders. */
@@ -94,11 +85,11 @@ class ChangedTileRenderTest {
             throws java.io.IOException {
         PanoramaRequest request = MeshReuseRenderTest.at(46.518, 8.51, 2);
         java.nio.file.Path file = dir.resolve("N46E008.hgt");
-        writeTile(file, 0);
+        writeTile(dir, 0);
         Panorama before, after, fresh;
         try (PanoramaRenderer r = PanoramaRenderer.open(new dempano.dem.DemDirectory(dir, 16))) {
             before = r.render(request);
-            writeTile(file, 400);
+            writeTile(dir, 400);
             // A later modification time, whatever the file system's clock resolution.
             java.nio.file.Files.setLastModifiedTime(file, java.nio.file.attribute.FileTime.fromMillis(
                     java.nio.file.Files.getLastModifiedTime(file).toMillis() + 10_000));

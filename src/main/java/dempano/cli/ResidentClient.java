@@ -1,0 +1,356 @@
+package dempano.cli;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.channels.SocketChannel;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+
+/**
+ * The start script's side of the resident process ({@code DEMPANO_RESIDENT=on}): hands a panorama command to
+ * this user's resident process for this installation ({@link ResidentServer}), starting one where none runs,
+ * and passes its output and exit code on. Loads nothing of the renderer or of picocli, so that the JVM it runs
+ * in stays small and quick.
+ *
+ * <p>Which resident process: one per user, installation and setting, found by its socket
+ * {@code DIR/STAMP.sock}. DIR is {@code $DEMPANO_RESIDENT_DIR}, else {@code $XDG_RUNTIME_DIR/dempano}, else
+ * {@code ~/.cache/dempano/resident}, made readable by the user alone. STAMP is a hash of everything a run's
+ * result may depend on besides its arguments and working directory: the Java installation, the JVM's options,
+ * every class path entry's path, size and modification time (a rebuilt or reinstalled dempano has another
+ * stamp, so a resident process never serves a run of other code), and the environment variables the renderer
+ * reads (the deviation cache's folder, the GL platform and Mesa's settings, the display). A process whose stamp
+ * nobody uses any more ends after its idle time.
+ */
+final class ResidentClient {
+    /** {@link #run}'s answer where it did not render: the caller renders in its own process. */
+    static final int NOT_SERVED = Integer.MIN_VALUE;
+    /** Idle time after which a resident process ends, seconds, unless {@code DEMPANO_RESIDENT_IDLE_S} says. */
+    static final int DEFAULT_IDLE_SECONDS = 600;
+    /** How long a client waits for a resident process it started to accept, milliseconds. */
+    private static final long START_WAIT_MILLIS = 30_000;
+
+    private ResidentClient() {
+    }
+
+    /** Whether the environment asks for the resident process: {@code DEMPANO_RESIDENT} is on, 1, true or yes. */
+    static boolean wanted(Map<String, String> env) {
+        String v = env.get("DEMPANO_RESIDENT");
+        return v != null && Set.of("on", "1", "true", "yes").contains(v.trim().toLowerCase(Locale.ROOT));
+    }
+
+    /**
+     * Whether the resident process renders these arguments: a panorama (not a subcommand, help or the version,
+     * which are quicker here).
+     */
+    static boolean serves(String... args) {
+        if (Main.needsSubcommands(args) || args[0].equals(ResidentCommand.NAME)) {
+            return false;
+        }
+        for (String a : args) {
+            if (a.equals("--version") || (a.startsWith("-") && !a.startsWith("--") && a.indexOf('V') > 0)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Renders by the resident process, starting one if needed; its standard output and error go to this
+     * process's. Returns the run's exit code, or {@link #NOT_SERVED} (with a line on standard error saying why)
+     * where no resident process could take it: the caller then renders itself.
+     */
+    static int run(String... args) {
+        Map<String, String> env = System.getenv();
+        try {
+            Path socket = socket(env);
+            ResidentProtocol.Request request = new ResidentProtocol.Request(ResidentProtocol.RENDER, stamp(env),
+                    Path.of("").toAbsolutePath().toString(), List.of(args));
+            for (int attempt = 1; ; attempt++) {
+                SocketChannel channel = connect(socket);
+                if (channel == null) {
+                    start(socket, env);
+                    channel = awaitStart(socket);
+                }
+                try (SocketChannel ch = channel) {
+                    return exchange(ch, request, System.out, System.err);
+                } catch (Unanswered e) {
+                    if (attempt == 2) {
+                        throw e;
+                    }
+                    // It was ending as this client connected (its last client stopped, its idle time out): once more.
+                }
+            }
+        } catch (Refused e) {
+            System.err.println("dempano: " + e.getMessage() + ": rendering in this process");
+            return NOT_SERVED;
+        } catch (IOException | RuntimeException e) {
+            System.err.println("dempano: no resident process (" + e.getMessage() + "): rendering in this process");
+            return NOT_SERVED;
+        }
+    }
+
+    /** The connection ended before the resident process answered at all (it was ending). */
+    static final class Unanswered extends IOException {
+        Unanswered(String message) {
+            super(message);
+        }
+    }
+
+    /** The resident process would not take the request (busy, another stamp); the message is why. */
+    static final class Refused extends IOException {
+        Refused(String reason) {
+            super("the resident process " + reason);
+        }
+    }
+
+    /**
+     * Sends a request and copies the frames that come back to {@code out} and {@code err}; returns the exit code.
+     *
+     * @throws Refused      where the process would not take it
+     * @throws IOException  where the connection ends without an exit code
+     */
+    static int exchange(SocketChannel ch, ResidentProtocol.Request request, PrintStream out, PrintStream err)
+            throws IOException {
+        try {
+            request.write(new DataOutputStream(new java.io.BufferedOutputStream(ResidentProtocol.out(ch))));
+        } catch (IOException e) {
+            throw new Unanswered("the resident process could not be told the run (" + e.getMessage() + ")");
+        }
+        DataInputStream in = new DataInputStream(new java.io.BufferedInputStream(ResidentProtocol.in(ch)));
+        for (boolean answered = false; ; answered = true) {
+            ResidentProtocol.Frame f;
+            try {
+                f = ResidentProtocol.Frame.read(in);
+            } catch (IOException e) {
+                out.flush();
+                String why = "the resident process ended before the run did (" + (e.getMessage() == null
+                        ? e.getClass().getSimpleName() : e.getMessage()) + "; its log: " + logOf(socketOf(ch)) + ")";
+                throw answered ? new IOException(why, e) : new Unanswered(why);
+            }
+            switch (f.type()) {
+                case ResidentProtocol.OUT -> out.write(f.bytes(), 0, f.bytes().length);
+                case ResidentProtocol.ERR -> err.write(f.bytes(), 0, f.bytes().length);
+                case ResidentProtocol.EXIT -> {
+                    out.flush();
+                    err.flush();
+                    return f.code();
+                }
+                case ResidentProtocol.REFUSED -> throw new Refused(f.reason());
+                default -> throw new IOException("bad frame " + f.type());
+            }
+        }
+    }
+
+    private static Path socketOf(SocketChannel ch) {
+        try {
+            return ((UnixDomainSocketAddress) ch.getRemoteAddress()).getPath();
+        } catch (IOException | RuntimeException e) {
+            return Path.of("?");
+        }
+    }
+
+    /** The log file of a resident process: its socket's name with {@code .log}. */
+    static Path logOf(Path socket) {
+        String name = socket.getFileName().toString();
+        return socket.resolveSibling(name.replaceFirst("\\.sock$", "") + ".log");
+    }
+
+    /** A connection to the resident process at {@code socket}, or null where none listens (a stale file is removed). */
+    static SocketChannel connect(Path socket) throws IOException {
+        if (!Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
+            return null;
+        }
+        SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
+        try {
+            ch.connect(UnixDomainSocketAddress.of(socket));
+            return ch;
+        } catch (java.net.ConnectException | java.nio.file.NoSuchFileException e) {
+            ch.close();
+            Files.deleteIfExists(socket); // left by a process that was killed: nobody listens
+            return null;
+        } catch (IOException e) {
+            ch.close();
+            throw e;
+        }
+    }
+
+    private static SocketChannel awaitStart(Path socket) throws IOException {
+        long until = System.nanoTime() + START_WAIT_MILLIS * 1_000_000;
+        while (System.nanoTime() < until) {
+            SocketChannel ch = Files.exists(socket, LinkOption.NOFOLLOW_LINKS) ? tryConnect(socket) : null;
+            if (ch != null) {
+                return ch;
+            }
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while the resident process started");
+            }
+        }
+        throw new IOException("the resident process did not start within " + START_WAIT_MILLIS / 1000 + " s (its log: "
+                + logOf(socket) + ")");
+    }
+
+    private static SocketChannel tryConnect(Path socket) throws IOException {
+        SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
+        try {
+            ch.connect(UnixDomainSocketAddress.of(socket));
+            return ch;
+        } catch (IOException e) {
+            ch.close();
+            return null;
+        }
+    }
+
+    /** The socket of this user's resident process for this installation and setting. */
+    static Path socket(Map<String, String> env) throws IOException {
+        return directory(env).resolve(stamp(env) + ".sock");
+    }
+
+    /**
+     * The folder of the resident processes' sockets and logs, made if missing, readable by this user alone.
+     *
+     * @throws IOException where it cannot be made, or others may write to it
+     */
+    static Path directory(Map<String, String> env) throws IOException {
+        Path dir;
+        String own = env.get("DEMPANO_RESIDENT_DIR"), runtime = env.get("XDG_RUNTIME_DIR");
+        if (own != null && !own.isBlank()) {
+            dir = Path.of(own);
+        } else if (runtime != null && !runtime.isBlank() && Files.isDirectory(Path.of(runtime))) {
+            dir = Path.of(runtime, "dempano");
+        } else {
+            dir = Path.of(System.getProperty("user.home"), ".cache", "dempano", "resident");
+        }
+        dir = dir.toAbsolutePath();
+        Set<PosixFilePermission> ownerOnly = PosixFilePermissions.fromString("rwx------");
+        if (!Files.isDirectory(dir)) {
+            Files.createDirectories(dir.getParent());
+            try {
+                Files.createDirectory(dir, PosixFilePermissions.asFileAttribute(ownerOnly));
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                // made meanwhile by another client
+            }
+        }
+        Set<PosixFilePermission> p = Files.getPosixFilePermissions(dir);
+        if (!Files.getOwner(dir).getName().equals(System.getProperty("user.name"))
+                || p.contains(PosixFilePermission.GROUP_WRITE) || p.contains(PosixFilePermission.OTHERS_WRITE)) {
+            throw new IOException(dir + " is not this user's alone (owner " + Files.getOwner(dir).getName() + ", "
+                    + PosixFilePermissions.toString(p) + ")");
+        }
+        return dir;
+    }
+
+    /** Environment variables that can change a run's result or its GL context, all kept in the stamp. */
+    private static boolean shapesTheRun(String name) {
+        return Set.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME", "DEMPANO_GL", "DEMPANO_DEBUG", "DISPLAY", "WAYLAND_DISPLAY",
+                "DEMPANO_RESIDENT_IDLE_S").contains(name)
+                || List.of("MESA_", "LIBGL_", "GALLIUM_", "LP_", "EGL_", "__GL", "__EGL").stream().anyMatch(name::startsWith);
+    }
+
+    /** The JVM's options as it was started (the class path left out: the stamp lists it file by file). */
+    static List<String> jvmOptions() {
+        List<String> all = ProcessHandle.current().info().arguments().map(List::of).orElse(null);
+        if (all == null) {
+            all = java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments();
+        }
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) {
+            String a = all.get(i);
+            if (a.equals(Main.class.getName()) || !a.startsWith("-")) {
+                break; // the main class: the program's arguments follow
+            }
+            if (a.equals("-classpath") || a.equals("-cp") || a.equals("--class-path")) {
+                i++;
+                continue;
+            }
+            out.add(a);
+        }
+        return out;
+    }
+
+    /**
+     * A hash (16 hex digits) of what a run's result may depend on besides its arguments and working directory
+     * (see the class comment).
+     */
+    static String stamp(Map<String, String> env) {
+        StringBuilder s = new StringBuilder();
+        s.append(System.getProperty("java.home")).append('\n').append(System.getProperty("java.vm.version")).append('\n');
+        jvmOptions().forEach(o -> s.append(o).append('\n'));
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            File f = new File(entry);
+            s.append(f.getAbsolutePath()).append(' ').append(f.length()).append(' ').append(f.lastModified()).append('\n');
+        }
+        new TreeMap<>(env).forEach((k, v) -> {
+            if (shapesTheRun(k)) {
+                s.append(k).append('=').append(v).append('\n');
+            }
+        });
+        long h = 0xCBF29CE484222325L;
+        for (int i = 0; i < s.length(); i++) {
+            h = (h ^ s.charAt(i)) * 0x100000001B3L;
+        }
+        return String.format("%016x", h);
+    }
+
+    /** Starts a resident process for {@code socket}, detached from this terminal's process group where possible. */
+    private static void start(Path socket, Map<String, String> env) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        for (String setsid : List.of("/usr/bin/setsid", "/bin/setsid")) {
+            if (Files.isExecutable(Path.of(setsid))) {
+                cmd.add(setsid); // Ctrl-C in this terminal later reaches only the client, which passes it on
+                break;
+            }
+        }
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        List<String> options = jvmOptions();
+        cmd.addAll(options);
+        if (options.stream().noneMatch(o -> o.startsWith("-XX:G1PeriodicGCInterval"))) {
+            cmd.add("-XX:G1PeriodicGCInterval=60000"); // an idle process gives unused heap back to the system
+        }
+        cmd.add("-cp");
+        cmd.add(System.getProperty("java.class.path"));
+        cmd.add(ResidentServer.class.getName());
+        cmd.add(socket.toString());
+        cmd.add(stamp(env));
+        cmd.add(Integer.toString(idleSeconds(env)));
+        ProcessBuilder pb = new ProcessBuilder(cmd);
+        pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        File log = logOf(socket).toFile();
+        pb.redirectOutput(ProcessBuilder.Redirect.appendTo(log));
+        pb.redirectErrorStream(true);
+        pb.start();
+    }
+
+    /** The idle time of a resident process, seconds: {@code DEMPANO_RESIDENT_IDLE_S}, else the default. */
+    static int idleSeconds(Map<String, String> env) {
+        String v = env.get("DEMPANO_RESIDENT_IDLE_S");
+        if (v == null || v.isBlank()) {
+            return DEFAULT_IDLE_SECONDS;
+        }
+        try {
+            int s = Integer.parseInt(v.trim());
+            if (s >= 1) {
+                return s;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException("DEMPANO_RESIDENT_IDLE_S must be a whole number of seconds ≥ 1, got " + v);
+    }
+}

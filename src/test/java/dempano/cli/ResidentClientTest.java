@@ -1,0 +1,238 @@
+package dempano.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The start script's side of the resident process: when it is used, which folder and stamp, and, through the
+ * installed script, a resident process started, reused, stopped, ended by a client's going away, and runs
+ * rendered in the client's own process where it cannot be had.
+ */
+class ResidentClientTest {
+    @ParameterizedTest(name = "DEMPANO_RESIDENT={0}: {1}")
+    @CsvSource({"on, true", "ON, true", "1, true", "true, true", "yes, true", "off, false", "0, false", "'', false",
+            "maybe, false"})
+    void theEnvironmentSwitchesItOn(String value, boolean wanted) {
+        assertEquals(wanted, ResidentClient.wanted(Map.of("DEMPANO_RESIDENT", value)));
+        assertFalse(ResidentClient.wanted(Map.of()));
+    }
+
+    @ParameterizedTest(name = "{0}: {1}")
+    @CsvSource(delimiter = '|', value = {
+            "--lat 46 --lon 8 --dem-dir d | true",
+            "--out p | true",
+            "--lat 46 --lon 8 --dem-dir d --repeat 3 | true",
+            "--help | false",
+            "-h | false",
+            "--version | false",
+            "-V | false",
+            "photo x.jpg | false",
+            "batch v.csv | false",
+            "fly | false",
+            "resident status | false",
+            "help | false"})
+    void onlyPanoramasAreHandedOn(String args, boolean served) {
+        assertEquals(served, ResidentClient.serves(args.trim().split(" ")));
+    }
+
+    @Test
+    void theStampFollowsTheSettingsThatShapeARunAndNoOthers() {
+        Map<String, String> env = new HashMap<>(Map.of("HOME", "/home/a", "PATH", "/usr/bin"));
+        String base = ResidentClient.stamp(env);
+        assertTrue(base.matches("[0-9a-f]{16}"), base);
+        env.put("PATH", "/bin:/usr/bin");
+        env.put("TERM", "xterm");
+        assertEquals(base, ResidentClient.stamp(env), "unrelated variables");
+        for (String shaping : List.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME", "DEMPANO_GL", "DISPLAY", "MESA_GL_VERSION_OVERRIDE",
+                "LIBGL_ALWAYS_SOFTWARE", "GALLIUM_DRIVER", "LP_NUM_THREADS", "DEMPANO_RESIDENT_IDLE_S")) {
+            Map<String, String> other = new HashMap<>(env);
+            other.put(shaping, "1");
+            assertNotEquals(base, ResidentClient.stamp(other), shaping);
+        }
+    }
+
+    @Test
+    void theFolderIsTheUsersAlone(@TempDir Path dir) throws IOException {
+        Path own = dir.resolve("mine");
+        assertEquals(own.toAbsolutePath(), ResidentClient.directory(Map.of("DEMPANO_RESIDENT_DIR", own.toString())));
+        assertEquals("rwx------", PosixFilePermissions.toString(Files.getPosixFilePermissions(own)));
+        Path shared = Files.createDirectory(dir.resolve("shared"));
+        Files.setPosixFilePermissions(shared, PosixFilePermissions.fromString("rwxrwxrwx"));
+        IOException e = assertThrows(IOException.class,
+                () -> ResidentClient.directory(Map.of("DEMPANO_RESIDENT_DIR", shared.toString())));
+        assertTrue(e.getMessage().contains("is not this user's alone"), e.getMessage());
+        assertEquals(dir.resolve("dempano"), ResidentClient.directory(Map.of("XDG_RUNTIME_DIR", dir.toString())));
+    }
+
+    @Test
+    void theIdleTimeIsWholeSecondsOrTheDefault() {
+        assertEquals(ResidentClient.DEFAULT_IDLE_SECONDS, ResidentClient.idleSeconds(Map.of()));
+        assertEquals(30, ResidentClient.idleSeconds(Map.of("DEMPANO_RESIDENT_IDLE_S", " 30 ")));
+        for (String bad : List.of("0", "-5", "1.5", "ten")) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> ResidentClient.idleSeconds(Map.of("DEMPANO_RESIDENT_IDLE_S", bad)));
+            assertTrue(e.getMessage().contains("DEMPANO_RESIDENT_IDLE_S"), e.getMessage());
+        }
+    }
+
+    // Through the installed start script: real processes.
+
+    private static Map<String, String> env(Path dir) {
+        return Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR", dir.resolve("sock").toString(),
+                "DEMPANO_RESIDENT_IDLE_S", "90");
+    }
+
+    private static long residentPid(String err, int run, Path dir) throws IOException {
+        Matcher m = Pattern.compile("resident process (\\d+), run " + run + "\\b").matcher(err);
+        if (!m.find()) {
+            StringBuilder logs = new StringBuilder();
+            try (var files = Files.list(dir.resolve("sock"))) {
+                for (Path f : files.filter(f -> f.toString().endsWith(".log")).toList()) {
+                    logs.append(f).append(":\n").append(Files.readString(f));
+                }
+            }
+            throw new AssertionError("run " + run + " by a resident process: " + err + "\nlogs: " + logs);
+        }
+        return Long.parseLong(m.group(1));
+    }
+
+    @Test
+    void theScriptStartsAResidentProcessUsesItAgainAndStopsIt(@TempDir Path dir) throws Exception {
+        Map<String, String> env = env(dir);
+        long pid = -1;
+        try {
+            String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p1").toString());
+            assertEquals("0", first[0], first[2]);
+            pid = residentPid(first[2], 1, dir);
+            assertTrue(pid != ProcessHandle.current().pid());
+            assertTrue(Files.isRegularFile(dir.resolve("p1.png")));
+            String[] second = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p2").toString());
+            assertEquals("0", second[0], second[2]);
+            assertEquals(pid, residentPid(second[2], 2, dir), "the same process, warm");
+            assertTrue(Files.isRegularFile(dir.resolve("p2.png")));
+
+            String[] status = StartScriptTest.run(env, "resident", "status");
+            assertEquals("0", status[0], status[2]);
+            assertTrue(status[1].contains("resident process " + pid + ": up") && status[1].contains("2 runs"), status[1]);
+            String[] stop = StartScriptTest.run(env, "resident", "stop");
+            assertEquals("0", stop[0], stop[2]);
+            assertTrue(stop[1].contains("stopped the resident process " + pid), stop[1]);
+            String[] none = StartScriptTest.run(env, "resident", "status");
+            assertEquals("1", none[0]);
+            assertTrue(none[1].contains("no resident process"), none[1]);
+            pid = -1;
+        } finally {
+            if (pid > 0) {
+                ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
+            }
+        }
+    }
+
+    /**
+     * A client stopped during its run (SIGTERM, as Ctrl-C) ends the resident process; the next run starts another,
+     * and its output set is complete.
+     */
+    @Test
+    void aClientStoppedDuringItsRunEndsTheResidentProcess(@TempDir Path dir) throws Exception {
+        Map<String, String> env = env(dir);
+        long pid = -1;
+        try {
+            String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
+            assertEquals("0", first[0], first[2]);
+            pid = residentPid(first[2], 1, dir);
+
+            ProcessBuilder pb = new ProcessBuilder(StartScriptTest.SCRIPT.toString(), "--ppd", "20", "--out",
+                    dir.resolve("p").toString());
+            pb.environment().remove("JAVA_OPTS");
+            pb.environment().remove("DEMPANO_OPTS");
+            pb.environment().putAll(env);
+            pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
+            Process client = pb.start();
+            CountDownLatch drawing = new CountDownLatch(1);
+            StringBuilder seen = new StringBuilder();
+            Thread reader = new Thread(() -> {
+                try (BufferedReader r = new BufferedReader(new InputStreamReader(client.getErrorStream(), StandardCharsets.UTF_8))) {
+                    for (String line; (line = r.readLine()) != null; ) {
+                        synchronized (seen) {
+                            seen.append(line).append('\n');
+                        }
+                        if (line.contains("] rendering")) {
+                            drawing.countDown();
+                        }
+                    }
+                } catch (IOException e) {
+                    // the client ended
+                }
+            });
+            reader.start();
+            assertTrue(drawing.await(120, TimeUnit.SECONDS), "the second run draws: " + seen);
+            client.destroy(); // SIGTERM
+            assertTrue(client.waitFor(30, TimeUnit.SECONDS));
+            reader.join(10_000);
+            synchronized (seen) {
+                assertTrue(seen.toString().contains("run 2"), seen.toString());
+            }
+            Path socket = ResidentClient.socket(env);
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            boolean listening = true;
+            while (listening && System.nanoTime() < until) {
+                try (var ch = ResidentClient.connect(socket)) {
+                    listening = ch != null;
+                }
+                Thread.sleep(listening ? 100 : 0);
+            }
+            assertFalse(listening, "the resident process ended");
+
+            String[] next = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
+            assertEquals("0", next[0], next[2]);
+            long again = residentPid(next[2], 1, dir);
+            assertNotEquals(pid, again, "a new resident process");
+            pid = again;
+            try (var files = Files.list(dir)) {
+                assertEquals(List.of("p-distance.npy", "p-distance.png", "p.json", "p.png"),
+                        files.map(f -> f.getFileName().toString()).filter(n -> n.startsWith("p")).sorted().toList(),
+                        "a complete set, nothing staged left");
+            }
+            assertEquals("0", StartScriptTest.run(env, "resident", "stop")[0]);
+            pid = -1;
+        } finally {
+            if (pid > 0) {
+                ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
+            }
+        }
+    }
+
+    @Test
+    void withoutAUsableFolderTheRunIsRenderedInTheClient(@TempDir Path dir) throws Exception {
+        Path shared = Files.createDirectory(dir.resolve("shared"));
+        Files.setPosixFilePermissions(shared, PosixFilePermissions.fromString("rwxrwxrwx"));
+        String[] r = StartScriptTest.run(Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR", shared.toString()),
+                "--ppd", "2", "--out", dir.resolve("p").toString());
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[2].contains("is not this user's alone") && r[2].contains("rendering in this process"), r[2]);
+        assertFalse(Pattern.compile("resident process \\d+").matcher(r[2]).find(), r[2]);
+        assertTrue(Files.isRegularFile(dir.resolve("p.png")));
+    }
+}
