@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
@@ -19,9 +20,10 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code gradle benchBatch}: seconds per panorama for N nearby viewpoints rendered by one
- * {@code dempano batch} process against one {@code dempano} process per viewpoint, both through
- * the installed start script (JVM start, OpenGL context and cold caches included), in alternating
- * rounds. Prints a Markdown table; writes nothing else (outputs go to a temporary folder, deleted).
+ * {@code dempano batch} process against one {@code dempano} process per viewpoint, and against one start
+ * script per viewpoint handing it to the resident process ({@code DEMPANO_RESIDENT=on}; the round's first
+ * run starts it, cold, and the round's end stops it), all through the installed start script (JVM start,
+ * OpenGL context and cold caches included), in alternating rounds. Prints a Markdown table; writes nothing else (outputs go to a temporary folder, deleted).
  */
 @Command(name = "bench-batch", mixinStandardHelpOptions = true,
         description = "Batch against one process per panorama, seconds per panorama.")
@@ -74,6 +76,7 @@ public final class BatchBenchmark implements Callable<Integer> {
         List<String> common = List.of(settings.trim().split("\\s+"));
         double[] batchWhole = new double[rounds], batchRowMean = new double[rounds], batchRowWarmMedian = new double[rounds];
         double[] singleMean = new double[rounds], singleMedian = new double[rounds];
+        double[] residentMean = new double[rounds], residentMedian = new double[rounds];
         for (int round = 0; round < rounds; round++) {
             Path out = Files.createDirectories(tmp.resolve("batch" + round));
             List<String> cmd = new ArrayList<>(List.of(dempano.toString(), "batch", csvFile.toString(), "--out-dir", out.toString(),
@@ -85,18 +88,27 @@ public final class BatchBenchmark implements Callable<Integer> {
             batchRowWarmMedian[round] = median(Arrays.copyOfRange(rows, 1, rows.length));
             System.err.printf(Locale.ROOT, "bench-batch: round %d batch: %.2f s per panorama (whole process / %d)%n",
                     round + 1, batchWhole[round], viewpoints);
-            double[] single = new double[viewpoints];
-            for (int i = 0; i < viewpoints; i++) {
-                List<String> one = new ArrayList<>(List.of(dempano.toString(), "--lat", String.format(Locale.ROOT, "%.5f", at.get(i)[0]),
-                        "--lon", String.format(Locale.ROOT, "%.5f", at.get(i)[1]), "--dem-dir", demDir.toString(),
-                        "--out", tmp.resolve("single" + round + "-" + i).toString()));
-                one.addAll(common);
-                single[i] = run(one, tmp);
+            for (boolean resident : new boolean[] {false, true}) {
+                // One start script per panorama: each in its own process, or (DEMPANO_RESIDENT=on) handed to the
+                // resident process, which the round's first run starts and its end stops.
+                Map<String, String> env = resident ? Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR",
+                        tmp.resolve("resident").toString()) : Map.of();
+                double[] single = new double[viewpoints];
+                for (int i = 0; i < viewpoints; i++) {
+                    List<String> one = new ArrayList<>(List.of(dempano.toString(), "--lat", String.format(Locale.ROOT, "%.5f", at.get(i)[0]),
+                            "--lon", String.format(Locale.ROOT, "%.5f", at.get(i)[1]), "--dem-dir", demDir.toString(),
+                            "--out", tmp.resolve((resident ? "resident" : "single") + round + "-" + i).toString()));
+                    one.addAll(common);
+                    single[i] = run(one, tmp, env);
+                }
+                if (resident) {
+                    run(List.of(dempano.toString(), "resident", "stop"), tmp, env);
+                }
+                (resident ? residentMean : singleMean)[round] = Arrays.stream(single).average().orElse(Double.NaN);
+                (resident ? residentMedian : singleMedian)[round] = median(single);
+                System.err.printf(Locale.ROOT, "bench-batch: round %d %s: %.2f s per panorama (mean of %d processes)%n",
+                        round + 1, resident ? "resident" : "single", (resident ? residentMean : singleMean)[round], viewpoints);
             }
-            singleMean[round] = Arrays.stream(single).average().orElse(Double.NaN);
-            singleMedian[round] = median(single);
-            System.err.printf(Locale.ROOT, "bench-batch: round %d single: %.2f s per panorama (mean of %d processes)%n",
-                    round + 1, singleMean[round], viewpoints);
         }
         deleteTree(tmp);
         System.out.printf(Locale.ROOT, "%d viewpoints about 3 km apart around %.4f, %.4f; %s; PNG + distance written; "
@@ -106,6 +118,9 @@ public final class BatchBenchmark implements Callable<Integer> {
         System.out.println("|---|---:|");
         System.out.printf(Locale.ROOT, "| one process per panorama (installed start script), mean | %.2f |%n", median(singleMean));
         System.out.printf(Locale.ROOT, "| one process per panorama, median | %.2f |%n", median(singleMedian));
+        System.out.printf(Locale.ROOT, "| one start script per panorama, DEMPANO_RESIDENT=on (the first starts it), mean | %.2f |%n",
+                median(residentMean));
+        System.out.printf(Locale.ROOT, "| one start script per panorama, DEMPANO_RESIDENT=on, median | %.2f |%n", median(residentMedian));
         System.out.printf(Locale.ROOT, "| `dempano batch`, whole process / %d | %.2f |%n", viewpoints, median(batchWhole));
         System.out.printf(Locale.ROOT, "| `dempano batch`, rows' own time, mean (cold first row included) | %.2f |%n", median(batchRowMean));
         System.out.printf(Locale.ROOT, "| `dempano batch`, rows 2–%d, median | %.2f |%n", viewpoints, median(batchRowWarmMedian));
@@ -114,11 +129,18 @@ public final class BatchBenchmark implements Callable<Integer> {
 
     /** Runs a command to its end (output discarded), seconds of wall-clock time; fails on a non-zero exit. */
     private static double run(List<String> cmd, Path dir) throws IOException, InterruptedException {
+        return run(cmd, dir, Map.of());
+    }
+
+    /** As above, with these environment variables set. */
+    private static double run(List<String> cmd, Path dir, Map<String, String> env) throws IOException, InterruptedException {
         long t = System.nanoTime();
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log.txt").toFile());
         // The patch deviations every process keeps on disk (DeviationStore) in this run's own folder, filled by its first
         // process: the figures do not depend on what the user's cache held before.
         pb.environment().put("DEMPANO_CACHE_DIR", dir.resolve("cache").toString());
+        pb.environment().remove("DEMPANO_RESIDENT");
+        pb.environment().putAll(env);
         Process p = pb.start();
         if (!p.waitFor(30, TimeUnit.MINUTES) || p.exitValue() != 0) {
             throw new IOException(String.join(" ", cmd) + " failed: " + Files.readString(dir.resolve("log.txt")));

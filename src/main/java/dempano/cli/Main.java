@@ -134,28 +134,18 @@ public final class Main implements Callable<Integer> {
         default void failed(Throwable t) {
         }
 
-        /** A renderer for the length of one run. */
-        interface Lease extends AutoCloseable {
-            PanoramaRenderer renderer();
-
+        /** A renderer for the length of one run, and what closing the lease does (close it, or nothing: kept). */
+        record Lease(PanoramaRenderer renderer, Runnable onClose) implements AutoCloseable {
             @Override
-            void close();
+            public void close() {
+                onClose.run();
+            }
         }
 
         /** Opened for each run, closed after it. */
         Renderers PER_RUN = (dem, reference, repeat) -> {
             PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem) : openGl(dem, repeat);
-            return new Lease() {
-                @Override
-                public PanoramaRenderer renderer() {
-                    return r;
-                }
-
-                @Override
-                public void close() {
-                    r.close();
-                }
-            };
+            return new Lease(r, r::close);
         };
     }
 

@@ -318,6 +318,9 @@ final class ResidentClient {
             }
         }
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        // The client's own options, the client compiler alone included: with both compilers the process was faster
+        // once warm (1.36 against 1.51 s a Mount Washington run) but its first runs were slower (6.0, 2.2, 2.0 s),
+        // and 20 nearby viewpoints took longer in all (docs/cold-start.md).
         List<String> options = jvmOptions();
         cmd.addAll(options);
         if (options.stream().noneMatch(o -> o.startsWith("-XX:G1PeriodicGCInterval"))) {

@@ -55,14 +55,20 @@ final class ResidentProtocol {
         };
     }
 
+    /** A stream that writes whole arrays only: one byte is an array of one. */
+    private abstract static class ArrayStream extends OutputStream {
+        @Override
+        public void write(int b) throws IOException {
+            write(new byte[] {(byte) b}, 0, 1);
+        }
+
+        @Override
+        public abstract void write(byte[] b, int off, int len) throws IOException;
+    }
+
     /** A stream writing to the channel directly (see {@link #in}). */
     static OutputStream out(java.nio.channels.SocketChannel ch) {
-        return new OutputStream() {
-            @Override
-            public void write(int b) throws IOException {
-                write(new byte[] {(byte) b}, 0, 1);
-            }
-
+        return new ArrayStream() {
             @Override
             public void write(byte[] b, int off, int len) throws IOException {
                 java.nio.ByteBuffer buf = java.nio.ByteBuffer.wrap(b, off, len);
@@ -169,12 +175,7 @@ final class ResidentProtocol {
 
         /** A stream whose every write is one frame of {@code type}. */
         OutputStream stream(byte type) {
-            return new OutputStream() {
-                @Override
-                public void write(int b) throws IOException {
-                    write(new byte[] {(byte) b}, 0, 1);
-                }
-
+            return new ArrayStream() {
                 @Override
                 public void write(byte[] b, int off, int len) throws IOException {
                     if (len > 0) {

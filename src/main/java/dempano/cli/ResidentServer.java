@@ -337,18 +337,7 @@ public final class ResidentServer {
             if (gl == null) {
                 gl = PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault());
             }
-            PanoramaRenderer r = gl;
-            return new Lease() {
-                @Override
-                public PanoramaRenderer renderer() {
-                    return r;
-                }
-
-                @Override
-                public void close() {
-                    // kept for the next run
-                }
-            };
+            return new Lease(gl, () -> { }); // kept for the next run
         }
 
         @Override

@@ -99,6 +99,16 @@ class ResidentClientTest {
 
     // Through the installed start script: real processes.
 
+    /** The resident process a test started and has not stopped (ended after the test whatever happened). */
+    private long started = -1;
+
+    @org.junit.jupiter.api.AfterEach
+    void endWhatWasStarted() {
+        if (started > 0) {
+            ProcessHandle.of(started).ifPresent(ProcessHandle::destroyForcibly);
+        }
+    }
+
     private static Map<String, String> env(Path dir) {
         return Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR", dir.resolve("sock").toString(),
                 "DEMPANO_RESIDENT_IDLE_S", "90");
@@ -121,33 +131,27 @@ class ResidentClientTest {
     @Test
     void theScriptStartsAResidentProcessUsesItAgainAndStopsIt(@TempDir Path dir) throws Exception {
         Map<String, String> env = env(dir);
-        long pid = -1;
-        try {
-            String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p1").toString());
-            assertEquals("0", first[0], first[2]);
-            pid = residentPid(first[2], 1, dir);
-            assertTrue(pid != ProcessHandle.current().pid());
-            assertTrue(Files.isRegularFile(dir.resolve("p1.png")));
-            String[] second = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p2").toString());
-            assertEquals("0", second[0], second[2]);
-            assertEquals(pid, residentPid(second[2], 2, dir), "the same process, warm");
-            assertTrue(Files.isRegularFile(dir.resolve("p2.png")));
+        String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p1").toString());
+        assertEquals("0", first[0], first[2]);
+        started = residentPid(first[2], 1, dir);
+        long pid = started;
+        assertTrue(pid != ProcessHandle.current().pid());
+        assertTrue(Files.isRegularFile(dir.resolve("p1.png")));
+        String[] second = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p2").toString());
+        assertEquals("0", second[0], second[2]);
+        assertEquals(pid, residentPid(second[2], 2, dir), "the same process, warm");
+        assertTrue(Files.isRegularFile(dir.resolve("p2.png")));
 
-            String[] status = StartScriptTest.run(env, "resident", "status");
-            assertEquals("0", status[0], status[2]);
-            assertTrue(status[1].contains("resident process " + pid + ": up") && status[1].contains("2 runs"), status[1]);
-            String[] stop = StartScriptTest.run(env, "resident", "stop");
-            assertEquals("0", stop[0], stop[2]);
-            assertTrue(stop[1].contains("stopped the resident process " + pid), stop[1]);
-            String[] none = StartScriptTest.run(env, "resident", "status");
-            assertEquals("1", none[0]);
-            assertTrue(none[1].contains("no resident process"), none[1]);
-            pid = -1;
-        } finally {
-            if (pid > 0) {
-                ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
-            }
-        }
+        String[] status = StartScriptTest.run(env, "resident", "status");
+        assertEquals("0", status[0], status[2]);
+        assertTrue(status[1].contains("resident process " + pid + ": up") && status[1].contains("2 runs"), status[1]);
+        String[] stop = StartScriptTest.run(env, "resident", "stop");
+        assertEquals("0", stop[0], stop[2]);
+        assertTrue(stop[1].contains("stopped the resident process " + pid), stop[1]);
+        String[] none = StartScriptTest.run(env, "resident", "status");
+        assertEquals("1", none[0]);
+        assertTrue(none[1].contains("no resident process"), none[1]);
+        started = -1;
     }
 
     /**
@@ -157,71 +161,65 @@ class ResidentClientTest {
     @Test
     void aClientStoppedDuringItsRunEndsTheResidentProcess(@TempDir Path dir) throws Exception {
         Map<String, String> env = env(dir);
-        long pid = -1;
-        try {
-            String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
-            assertEquals("0", first[0], first[2]);
-            pid = residentPid(first[2], 1, dir);
+        String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
+        assertEquals("0", first[0], first[2]);
+        started = residentPid(first[2], 1, dir);
+        long pid = started;
 
-            ProcessBuilder pb = new ProcessBuilder(StartScriptTest.SCRIPT.toString(), "--ppd", "20", "--out",
-                    dir.resolve("p").toString());
-            pb.environment().remove("JAVA_OPTS");
-            pb.environment().remove("DEMPANO_OPTS");
-            pb.environment().putAll(env);
-            pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
-            Process client = pb.start();
-            CountDownLatch drawing = new CountDownLatch(1);
-            StringBuilder seen = new StringBuilder();
-            Thread reader = new Thread(() -> {
-                try (BufferedReader r = new BufferedReader(new InputStreamReader(client.getErrorStream(), StandardCharsets.UTF_8))) {
-                    for (String line; (line = r.readLine()) != null; ) {
-                        synchronized (seen) {
-                            seen.append(line).append('\n');
-                        }
-                        if (line.contains("] rendering")) {
-                            drawing.countDown();
-                        }
+        ProcessBuilder pb = new ProcessBuilder(StartScriptTest.SCRIPT.toString(), "--ppd", "20", "--out",
+                dir.resolve("p").toString());
+        pb.environment().remove("JAVA_OPTS");
+        pb.environment().remove("DEMPANO_OPTS");
+        pb.environment().putAll(env);
+        pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        Process client = pb.start();
+        CountDownLatch drawing = new CountDownLatch(1);
+        StringBuilder seen = new StringBuilder();
+        Thread reader = new Thread(() -> {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(client.getErrorStream(), StandardCharsets.UTF_8))) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    synchronized (seen) {
+                        seen.append(line).append('\n');
                     }
-                } catch (IOException e) {
-                    // the client ended
+                    if (line.contains("] rendering")) {
+                        drawing.countDown();
+                    }
                 }
-            });
-            reader.start();
-            assertTrue(drawing.await(120, TimeUnit.SECONDS), "the second run draws: " + seen);
-            client.destroy(); // SIGTERM
-            assertTrue(client.waitFor(30, TimeUnit.SECONDS));
-            reader.join(10_000);
-            synchronized (seen) {
-                assertTrue(seen.toString().contains("run 2"), seen.toString());
+            } catch (IOException e) {
+                // the client ended
             }
-            Path socket = ResidentClient.socket(env);
-            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            boolean listening = true;
-            while (listening && System.nanoTime() < until) {
-                try (var ch = ResidentClient.connect(socket)) {
-                    listening = ch != null;
-                }
-                Thread.sleep(listening ? 100 : 0);
-            }
-            assertFalse(listening, "the resident process ended");
-
-            String[] next = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
-            assertEquals("0", next[0], next[2]);
-            long again = residentPid(next[2], 1, dir);
-            assertNotEquals(pid, again, "a new resident process");
-            pid = again;
-            try (var files = Files.list(dir)) {
-                assertEquals(List.of("p-distance.npy", "p-distance.png", "p.json", "p.png"),
-                        files.map(f -> f.getFileName().toString()).filter(n -> n.startsWith("p")).sorted().toList(),
-                        "a complete set, nothing staged left");
-            }
-            assertEquals("0", StartScriptTest.run(env, "resident", "stop")[0]);
-            pid = -1;
-        } finally {
-            if (pid > 0) {
-                ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
-            }
+        });
+        reader.start();
+        assertTrue(drawing.await(120, TimeUnit.SECONDS), "the second run draws: " + seen);
+        client.destroy(); // SIGTERM
+        assertTrue(client.waitFor(30, TimeUnit.SECONDS));
+        reader.join(10_000);
+        synchronized (seen) {
+            assertTrue(seen.toString().contains("run 2"), seen.toString());
         }
+        Path socket = ResidentClient.socket(env);
+        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        boolean listening = true;
+        while (listening && System.nanoTime() < until) {
+            try (var ch = ResidentClient.connect(socket)) {
+                listening = ch != null;
+            }
+            Thread.sleep(listening ? 100 : 0);
+        }
+        assertFalse(listening, "the resident process ended");
+
+        String[] next = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
+        assertEquals("0", next[0], next[2]);
+        long again = residentPid(next[2], 1, dir);
+        assertNotEquals(pid, again, "a new resident process");
+        started = again;
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("p-distance.npy", "p-distance.png", "p.json", "p.png"),
+                    files.map(f -> f.getFileName().toString()).filter(n -> n.startsWith("p")).sorted().toList(),
+                    "a complete set, nothing staged left");
+        }
+        assertEquals("0", StartScriptTest.run(env, "resident", "stop")[0]);
+        started = -1;
     }
 
     @Test
