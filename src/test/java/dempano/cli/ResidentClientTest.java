@@ -128,13 +128,18 @@ class ResidentClientTest {
         return Long.parseLong(m.group(1));
     }
 
+    /** The demo scene through the script at 2 px/° into {@code dir/name}: the pid of the resident process it started. */
+    private long firstRun(Map<String, String> env, Path dir, String name) throws Exception {
+        String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve(name).toString());
+        assertEquals("0", first[0], first[2]);
+        started = residentPid(first[2], 1, dir);
+        return started;
+    }
+
     @Test
     void theScriptStartsAResidentProcessUsesItAgainAndStopsIt(@TempDir Path dir) throws Exception {
         Map<String, String> env = env(dir);
-        String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p1").toString());
-        assertEquals("0", first[0], first[2]);
-        started = residentPid(first[2], 1, dir);
-        long pid = started;
+        long pid = firstRun(env, dir, "p1");
         assertTrue(pid != ProcessHandle.current().pid());
         assertTrue(Files.isRegularFile(dir.resolve("p1.png")));
         String[] second = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p2").toString());
@@ -161,10 +166,7 @@ class ResidentClientTest {
     @Test
     void aClientStoppedDuringItsRunEndsTheResidentProcess(@TempDir Path dir) throws Exception {
         Map<String, String> env = env(dir);
-        String[] first = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p").toString());
-        assertEquals("0", first[0], first[2]);
-        started = residentPid(first[2], 1, dir);
-        long pid = started;
+        long pid = firstRun(env, dir, "p");
 
         ProcessBuilder pb = new ProcessBuilder(StartScriptTest.SCRIPT.toString(), "--ppd", "20", "--out",
                 dir.resolve("p").toString());
