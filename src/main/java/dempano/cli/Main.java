@@ -104,22 +104,12 @@ public final class Main implements Callable<Integer> {
         }
     }
 
-    /** Where relative paths of the options lead (null: the process's working directory, as given). */
-    private Path workingDir;
-    /** Where the panorama's renderer comes from. */
-    private Renderers renderers = Renderers.PER_RUN;
-
-    /** Files named as the user named their prefix: relative to the working directory where {@code --out} was. */
-    private List<Path> asGiven(List<Path> files) {
-        if (workingDir == null || Path.of(out).isAbsolute()) {
-            return files;
-        }
-        return files.stream().map(f -> f.startsWith(workingDir) ? workingDir.relativize(f) : f).toList();
-    }
+    /** Where this run's relative paths lead and its renderer comes from. */
+    private RunContext context = RunContext.HERE;
 
     /** A path option resolved against the working directory (unchanged when it is the process's own). */
     private Path resolve(Path p) {
-        return workingDir == null || p == null ? p : workingDir.resolve(p);
+        return context.resolve(p);
     }
 
     /**
@@ -181,12 +171,13 @@ public final class Main implements Callable<Integer> {
 
     private static CommandLine commandLine(Path workingDir, Renderers renderers, String... args) {
         Main main = new Main();
-        main.workingDir = workingDir;
-        main.renderers = renderers;
+        main.context = new RunContext(workingDir, renderers);
         CommandLine cl = new CommandLine(main);
         if (needsSubcommands(args)) {
             cl.addSubcommand("fly", new FlyCommand());
-            cl.addSubcommand("photo", new PhotoCommand());
+            PhotoCommand photo = new PhotoCommand();
+            photo.context = main.context;
+            cl.addSubcommand("photo", photo);
             cl.addSubcommand("batch", new BatchCommand());
             cl.addSubcommand(ResidentCommand.NAME, new ResidentCommand());
         }
@@ -243,7 +234,7 @@ public final class Main implements Callable<Integer> {
                 .withSnapToSummitMetres(snapToSummitMetres == null ? Double.NaN : snapToSummitMetres)
                 .withClearViewMetres(clearViewMetres == null ? Double.NaN : clearViewMetres);
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
-        String out = workingDir == null ? this.out : resolve(Path.of(this.out)).toString();
+        String out = context.resolve(this.out);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
         if (outParent != null && this.out.startsWith("build/")) {
             Files.createDirectories(outParent); // the default location; user prefixes must point into an existing directory
@@ -295,7 +286,7 @@ public final class Main implements Callable<Integer> {
             java.util.List<String> table = new java.util.ArrayList<>();
             // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
             // name is printed when the views are drawn (asking for it sooner would wait for the context).
-            try (Renderers.Lease lease = renderers.lease(dem, reference, repeat)) {
+            try (Renderers.Lease lease = context.renderers().lease(dem, reference, repeat)) {
                 PanoramaRenderer r = lease.renderer();
                 boolean[] named = {false};
                 if (reference) {
@@ -338,7 +329,7 @@ public final class Main implements Callable<Integer> {
                         sightings.stream().filter(dempano.summits.SummitSighting::visible).count());
             }
         }
-        System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, asGiven(files));
+        System.err.printf(Locale.ROOT, "  [%6.1f s] wrote %s%n", (System.nanoTime() - t0) / 1e9, context.asGiven(files, this.out));
         System.err.printf(Locale.ROOT, "  eye at %.1f m (ground %.1f m), %d×%d px, stages %s ms, writing %.0f ms%n",
                 p.metadata().eyeAltitudeMetres(), p.metadata().groundElevationMetres(), p.widthPx(), p.heightPx(),
                 p.metadata().timingsMillis(), writingMillis);

@@ -1,8 +1,6 @@
 package dempano.cli;
 
-import dempano.terrain.DeviationStore;
 import dempano.CameraImage;
-import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
 import dempano.camera.LensDistortion;
 import dempano.camera.PhotoOverrides;
@@ -74,8 +72,14 @@ public final class PhotoCommand implements Callable<Integer> {
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (as for panoramas): P-summits.json/csv and labels.")
     Path summitsFile;
 
+    /** Where relative paths lead and the renderer comes from (the resident process sets the client's). */
+    RunContext context = RunContext.HERE;
+
     @Override
     public Integer call() throws Exception {
+        Path image = context.resolve(this.image), summitsFile = context.resolve(this.summitsFile);
+        String out = context.resolve(this.out);
+        List<Path> demDirs = this.demDirs.stream().map(context::resolve).toList();
         PanoramaRequest settings = render.applyTo(PanoramaRequest.at(0, 0), PanoramaRequest.DEFAULT_RANGE_METRES);
         boolean reference = render.referenceRenderer();
         dempano.dem.DemFill fill = render.demFill();
@@ -92,7 +96,7 @@ public final class PhotoCommand implements Callable<Integer> {
         }
         dempano.io.OutputSet.checkPrefix(out);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
-        if (outParent != null && out.startsWith("build/")) {
+        if (outParent != null && this.out.startsWith("build/")) {
             java.nio.file.Files.createDirectories(outParent);
         }
         SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
@@ -100,9 +104,9 @@ public final class PhotoCommand implements Callable<Integer> {
                 headingRangeDeg == null ? Double.NaN : headingRangeDeg, settings, summits, out);
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(demDirs, fill, w -> System.err.println("  warning: " + w));
         PhotoJob.Result done;
-        try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
-                : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
-            done = PhotoJob.run(r, input, new PhotoJob.Log() {
+        // Meshes kept through the job (as with --repeat): the orientation's panoramas and the photo's view share them.
+        try (Main.Renderers.Lease lease = context.renderers().lease(dem, reference, 2)) {
+            done = PhotoJob.run(lease.renderer(), input, new PhotoJob.Log() {
                 @Override
                 public void progress(String line) {
                     System.err.println("  " + line);
@@ -124,7 +128,7 @@ public final class PhotoCommand implements Callable<Integer> {
                         + " timings %s", rendered.widthPx(), rendered.heightPx(), rendered.metadata().latDeg(),
                 rendered.metadata().lonDeg(), rendered.metadata().eyeAltitudeMetres(), rendered.metadata().views(),
                 rendered.metadata().viewWidthPx(), rendered.metadata().viewHeightPx(), rendered.metadata().timingsMillis()));
-        done.files().forEach(f -> System.out.println("wrote " + f));
+        context.asGiven(done.files(), this.out).forEach(f -> System.out.println("wrote " + f));
         return 0;
     }
 

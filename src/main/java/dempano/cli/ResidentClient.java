@@ -21,7 +21,7 @@ import java.util.Set;
 import java.util.TreeMap;
 
 /**
- * The start script's side of the resident process ({@code DEMPANO_RESIDENT=on}): hands a panorama command to
+ * The start script's side of the resident process ({@code DEMPANO_RESIDENT=on}): hands a panorama or photo command to
  * this user's resident process for this installation ({@link ResidentServer}), starting one where none runs,
  * and passes its output and exit code on. Loads nothing of the renderer or of picocli, so that the JVM it runs
  * in stays small and quick.
@@ -53,15 +53,18 @@ final class ResidentClient {
     }
 
     /**
-     * Whether the resident process renders these arguments: a panorama (not a subcommand, help or the version,
-     * which are quicker here).
+     * Whether the resident process renders these arguments: a panorama, or {@code photo} (not another subcommand,
+     * help or the version, which are quicker here).
      */
     static boolean serves(String... args) {
-        if (Main.needsSubcommands(args) || args[0].equals(ResidentCommand.NAME)) {
+        boolean photo = args.length > 0 && args[0].equals("photo");
+        if (!photo && Main.needsSubcommands(args)) {
             return false;
         }
-        for (String a : args) {
-            if (a.equals("--version") || (a.startsWith("-") && !a.startsWith("--") && a.indexOf('V') > 0)) {
+        for (int i = photo ? 1 : 0; i < args.length; i++) {
+            String a = args[i];
+            if (a.equals("--help") || a.equals("--version") || (i == 1 && a.equals("help"))
+                    || (a.startsWith("-") && !a.startsWith("--") && (a.indexOf('V') > 0 || a.indexOf('h') > 0))) {
                 return false;
             }
         }

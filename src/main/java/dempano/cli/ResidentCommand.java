@@ -8,12 +8,13 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
-/** {@code dempano resident status|stop}: the resident process of this installation and setting. */
+/** {@code dempano resident status|stop}: this user's resident processes (every one in the folder). */
 @Command(name = ResidentCommand.NAME, mixinStandardHelpOptions = true,
         description = {"The resident render process (DEMPANO_RESIDENT=on): with it, a panorama from the shell is "
                 + "rendered by a process that keeps the OpenGL context, tiles and meshes warm from run to run, "
                 + "started by the first such run and ended after DEMPANO_RESIDENT_IDLE_S seconds idle (default 600).",
-                "status: whether one runs for this installation and setting, its memory and runs; stop: end it."},
+                "status: the resident processes of this user (one per installation and setting: panoramas and photos run"
+                        + " in separate ones), their memory and runs; stop: end them."},
         footer = {"", "Exit codes: 0 done, 1 none running, 2 bad arguments."})
 final class ResidentCommand implements Callable<Integer> {
     static final String NAME = "resident";
@@ -29,18 +30,29 @@ final class ResidentCommand implements Callable<Integer> {
             default -> throw new IllegalArgumentException("resident: the action is status or stop, got '" + action + "'");
         };
         java.util.Map<String, String> env = System.getenv();
-        Path socket = ResidentClient.socket(env);
-        SocketChannel ch = ResidentClient.connect(socket);
-        if (ch == null) {
-            System.out.println("no resident process for this installation and setting (socket " + socket + ")");
+        Path dir = ResidentClient.directory(env);
+        List<Path> sockets;
+        try (var files = java.nio.file.Files.list(dir)) {
+            sockets = files.filter(f -> f.getFileName().toString().endsWith(".sock")).sorted().toList();
+        }
+        int answered = 0;
+        for (Path socket : sockets) {
+            SocketChannel ch = ResidentClient.connect(socket); // a socket nobody listens on is removed
+            if (ch == null) {
+                continue;
+            }
+            try (ch) {
+                ResidentClient.exchange(ch, new ResidentProtocol.Request(kind, ResidentClient.stamp(env),
+                        Path.of("").toAbsolutePath().toString(), List.of()), System.out, System.err);
+                answered++;
+            } catch (IOException e) {
+                System.out.println(socket + ": " + e.getMessage());
+            }
+        }
+        if (answered == 0) {
+            System.out.println("no resident process (folder " + dir + ")");
             return 1;
         }
-        try (ch) {
-            return ResidentClient.exchange(ch, new ResidentProtocol.Request(kind, ResidentClient.stamp(env),
-                    Path.of("").toAbsolutePath().toString(), List.of()), System.out, System.err);
-        } catch (ResidentClient.Refused e) {
-            System.out.println(e.getMessage());
-            return 1;
-        }
+        return 0;
     }
 }

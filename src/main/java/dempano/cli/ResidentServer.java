@@ -201,7 +201,8 @@ public final class ResidentServer {
             DataInputStream in = new DataInputStream(ResidentProtocol.in(ch));
             ResidentProtocol.Request req = ResidentProtocol.Request.read(in);
             ResidentProtocol.Writer w = new ResidentProtocol.Writer(ResidentProtocol.out(ch));
-            if (!req.stamp().equals(stamp)) {
+            // Status and stop come from `dempano resident`, which asks every process in the (user's own) folder.
+            if (!req.stamp().equals(stamp) && req.kind().equals(ResidentProtocol.RENDER)) {
                 w.refused("serves another installation or setting");
                 return;
             }

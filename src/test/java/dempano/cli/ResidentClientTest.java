@@ -48,12 +48,16 @@ class ResidentClientTest {
             "-h | false",
             "--version | false",
             "-V | false",
-            "photo x.jpg | false",
+            "photo x.jpg | true",
+            "photo x.jpg --dem-dir d --out p | true",
+            "photo --help | false",
+            "photo x.jpg -h | false",
+            "photo -V | false",
             "batch v.csv | false",
             "fly | false",
             "resident status | false",
             "help | false"})
-    void onlyPanoramasAreHandedOn(String args, boolean served) {
+    void onlyPanoramasAndPhotosAreHandedOn(String args, boolean served) {
         assertEquals(served, ResidentClient.serves(args.trim().split(" ")));
     }
 

@@ -152,6 +152,29 @@ class ResidentServerTest {
         assertArrayEquals(now, Files.readAllBytes(work.resolve("out/c-distance.npy")), "drawn as the tile is now");
     }
 
+    @Test
+    void aPhotoTakesTheClientsPathsToo() throws IOException {
+        String[] camera = {"--lat", "46.518", "--lon", "8.51", "--heading-deg", "40", "--pitch-deg", "2", "--roll-deg", "0",
+                "--hfov-deg", "60", "--dem-dir", "dem", "--range-km", "30"};
+        List<String> fromFlags = new ArrayList<>(List.of("photo", "--width-px", "240", "--height-px", "160", "--out", "out/view"));
+        fromFlags.addAll(List.of(camera));
+        Result view = render(fromFlags.toArray(String[]::new));
+        assertEquals(0, view.code(), view.err());
+        assertTrue(view.out().contains("wrote out/view.png"), view.out());
+        assertTrue(Files.isRegularFile(work.resolve("out/view.png")));
+
+        // The view as the photograph (a relative IMAGE), every value pinned: its own view again, on its pixels.
+        List<String> ofPhoto = new ArrayList<>(List.of("photo", "out/view.png", "--out", "out/again"));
+        ofPhoto.addAll(List.of(camera));
+        Result again = render(ofPhoto.toArray(String[]::new));
+        assertEquals(0, again.code(), again.err());
+        assertTrue(again.err().contains("resident process " + ProcessHandle.current().pid() + ", run 2"), again.err());
+        assertArrayEquals(Files.readAllBytes(work.resolve("out/view-distance.npy")),
+                Files.readAllBytes(work.resolve("out/again-distance.npy")), "the same view");
+        Result missing = render("photo", "out/none.jpg", "--dem-dir", "dem", "--out", "out/x");
+        assertTrue(missing.code() != 0 && missing.err().contains(work.resolve("out/none.jpg").toString()), missing.err());
+    }
+
     /** The scene's arguments for a run in this process (its own renderer, paths made absolute). */
     private String[] inThisProcess(String out) {
         String[] args = scene("--out", work.resolve(out).toString());
@@ -172,6 +195,7 @@ class ResidentServerTest {
     @Test
     void anotherStampOrABusyProcessIsRefusedAndStatusAnswersMeanwhile() throws IOException {
         assertThrows(ResidentClient.Refused.class, () -> send(ResidentProtocol.RENDER, "fedcba9876543210", SCENE));
+        assertEquals(0, send(ResidentProtocol.STATUS, "fedcba9876543210").code(), "status answers any of the user's clients");
         server.busy.set(true); // as while another client's run is under way
         try {
             ResidentClient.Refused refused = assertThrows(ResidentClient.Refused.class, () -> render(scene("--out", "out/p")));
