@@ -85,8 +85,7 @@ final class ResidentClient {
             for (int attempt = 1; ; attempt++) {
                 SocketChannel channel = connect(socket);
                 if (channel == null) {
-                    start(socket, env);
-                    channel = awaitStart(socket);
+                    channel = awaitStart(socket, start(socket, env));
                 }
                 try (SocketChannel ch = channel) {
                     return exchange(ch, request, System.out, System.err);
@@ -191,12 +190,18 @@ final class ResidentClient {
         }
     }
 
-    private static SocketChannel awaitStart(Path socket) throws IOException {
+    /** Waits for the process {@code started} (or another client's, which won the socket) to accept. */
+    private static SocketChannel awaitStart(Path socket, Process started) throws IOException {
         long until = System.nanoTime() + START_WAIT_MILLIS * 1_000_000;
         while (System.nanoTime() < until) {
             SocketChannel ch = Files.exists(socket, LinkOption.NOFOLLOW_LINKS) ? tryConnect(socket) : null;
             if (ch != null) {
                 return ch;
+            }
+            // It ends at once, with 0, where another process has the socket (keep waiting for that one to accept).
+            if (!started.isAlive() && started.exitValue() != 0) {
+                throw new IOException("the resident process could not start (exit " + started.exitValue()
+                        + "; its log: " + logOf(socket) + ")");
             }
             try {
                 Thread.sleep(20);
@@ -220,9 +225,22 @@ final class ResidentClient {
         }
     }
 
-    /** The socket of this user's resident process for this installation and setting. */
+    /** The longest socket path, bytes, that every Unix takes (Linux 107, macOS 103). */
+    static final int MAX_SOCKET_PATH_BYTES = 100;
+
+    /**
+     * The socket of this user's resident process for this installation and setting.
+     *
+     * @throws IOException where its path is too long for a Unix socket (a deep {@code DEMPANO_RESIDENT_DIR})
+     */
     static Path socket(Map<String, String> env) throws IOException {
-        return directory(env).resolve(stamp(env) + ".sock");
+        Path socket = directory(env).resolve(stamp(env) + ".sock");
+        int bytes = socket.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
+        if (bytes > MAX_SOCKET_PATH_BYTES) {
+            throw new IOException("the socket path " + socket + " is " + bytes + " bytes, more than a Unix socket takes ("
+                    + MAX_SOCKET_PATH_BYTES + "): set DEMPANO_RESIDENT_DIR to a shorter folder");
+        }
+        return socket;
     }
 
     /**
@@ -312,7 +330,7 @@ final class ResidentClient {
     }
 
     /** Starts a resident process for {@code socket}, detached from this terminal's process group where possible. */
-    private static void start(Path socket, Map<String, String> env) throws IOException {
+    private static Process start(Path socket, Map<String, String> env) throws IOException {
         List<String> cmd = new ArrayList<>();
         for (String setsid : List.of("/usr/bin/setsid", "/bin/setsid")) {
             if (Files.isExecutable(Path.of(setsid))) {
@@ -340,7 +358,7 @@ final class ResidentClient {
         File log = logOf(socket).toFile();
         pb.redirectOutput(ProcessBuilder.Redirect.appendTo(log));
         pb.redirectErrorStream(true);
-        pb.start();
+        return pb.start();
     }
 
     /** The idle time of a resident process, seconds: {@code DEMPANO_RESIDENT_IDLE_S}, else the default. */

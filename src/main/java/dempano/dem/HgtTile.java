@@ -46,19 +46,28 @@ public final class HgtTile {
             throw new IllegalArgumentException("heights do not match " + samplesPerSide + "²");
         }
         this.samplesPerSide = samplesPerSide;
+        // One pass: the heights as whole metres where they all are, and their fingerprint (contentHash).
         short[] whole = new short[heightsMetres.length];
-        for (int i = 0; i < heightsMetres.length && whole != null; i++) {
+        boolean allWhole = true;
+        long hash = 0xCBF29CE484222325L ^ samplesPerSide;
+        for (int i = 0; i < heightsMetres.length; i++) {
             float h = heightsMetres[i];
-            whole[i] = (short) h;
-            if (whole[i] != h) {
-                whole = null; // not a whole number of metres in range (or NaN): keep floats
-            }
+            hash = (hash ^ (Float.floatToRawIntBits(h) & 0xFFFFFFFFL)) * FNV_PRIME;
+            short w = (short) h;
+            whole[i] = w;
+            allWhole &= w == h; // not a whole number of metres in range (or NaN): keep floats
         }
-        this.wholeMetres = whole;
-        this.heightsMetres = whole == null ? heightsMetres : null;
+        this.wholeMetres = allWhole ? whole : null;
+        this.heightsMetres = allWhole ? null : heightsMetres;
         this.voids = Objects.requireNonNull(voids);
         this.verticalDatum = DemContribution.UNKNOWN;
         this.contributions = null;
+        for (long word : this.filledVoids.toLongArray()) {
+            hash = (hash ^ word) * FNV_PRIME;
+        }
+        hash ^= hash >>> 33; // a final mix (MurmurHash3's), so that every bit depends on every sample
+        hash *= 0xFF51AFD7ED558CCDL;
+        this.contentHash = hash ^ (hash >>> 33);
     }
 
     /** A copy sharing the (immutable) heights, with another datum and contributions. */
@@ -73,6 +82,7 @@ public final class HgtTile {
         this.warnings = t.warnings;
         this.verticalDatum = Objects.requireNonNull(verticalDatum);
         this.contributions = contributions == null ? null : java.util.List.copyOf(contributions);
+        this.contentHash = t.contentHash;
     }
 
     /** This tile with its heights' vertical datum set (see {@link DemContribution#verticalDatum()}). */
@@ -129,43 +139,20 @@ public final class HgtTile {
         return (wholeMetres != null ? 2L : 4L) * samplesPerSide * samplesPerSide;
     }
 
-    /** {@link #contentHash()} once computed; 0 until then (a computed 0 is taken as 1). */
-    private volatile long contentHash;
+    private static final long FNV_PRIME = 0x100000001B3L;
+    /** See {@link #contentHash()}. */
+    private final long contentHash;
 
     /**
      * A 64-bit fingerprint of what is drawn from this tile: its size, every height (bit for bit) and which samples
      * are filled voids; not its source, datum or warnings. Tiles with the same heights have the same fingerprint;
      * tiles that differ anywhere have different ones except by a chance of about 2⁻⁶⁴ (FNV-1a over the samples, then
-     * a final mix; not made to resist crafted collisions). Computed on the first call (one pass over the heights:
-     * 1–2 ms for SRTM3 once compiled, 6–14 ms cold), then kept: caches of values derived from a tile's samples tell by it whether a tile
-     * read again (its file rewritten, or evicted and read back) holds the same heights.
+     * a final mix; not made to resist crafted collisions). Computed when the tile is made, in the pass that already
+     * reads every height: caches of values derived from a tile's samples tell by it whether a tile read again (its
+     * file rewritten, or evicted and read back) holds the same heights.
      */
     public long contentHash() {
-        long h = contentHash;
-        if (h != 0) {
-            return h;
-        }
-        final long prime = 0x100000001B3L;
-        h = 0xCBF29CE484222325L ^ samplesPerSide;
-        if (wholeMetres != null) {
-            for (short s : wholeMetres) {
-                h = (h ^ (s & 0xFFFF)) * prime;
-            }
-        } else {
-            h = (h ^ 0x1_0000_0000L) * prime; // float heights never hash as the same values held whole
-            for (float f : heightsMetres) {
-                h = (h ^ (Float.floatToRawIntBits(f) & 0xFFFFFFFFL)) * prime;
-            }
-        }
-        for (long word : filledVoids.toLongArray()) {
-            h = (h ^ word) * prime;
-        }
-        h ^= h >>> 33; // a final mix (MurmurHash3's), so that every bit depends on every sample
-        h *= 0xFF51AFD7ED558CCDL;
-        h ^= h >>> 33;
-        h = h == 0 ? 1 : h;
-        contentHash = h;
-        return h;
+        return contentHash;
     }
 
     /** True if the sample was a void, its height now interpolated. */

@@ -26,37 +26,19 @@ final class TileVersions {
     private record Key(TileId id, int intervalsPerDegree) {
     }
 
-    /** No fingerprint taken (yet). */
-    private static final long UNKNOWN = 0;
-
-    /** A tile as last seen: the object (weakly; null at sea level) and its fingerprint, or {@link #UNKNOWN}. */
+    /** A tile as last seen: the object (weakly; null at sea level) and its fingerprint. */
     private record Seen(WeakReference<HgtTile> tile, long hash) {
         boolean is(HgtTile t) {
             return t == null ? tile == null : tile != null && tile.get() == t;
-        }
-
-        /** The fingerprint of what was seen, where known or still computable; else {@link #UNKNOWN}. */
-        long hashNow() {
-            if (hash != UNKNOWN || tile == null) {
-                return tile == null ? SEA_LEVEL : hash;
-            }
-            HgtTile t = tile.get();
-            return t == null ? UNKNOWN : t.contentHash();
         }
     }
 
     private final Map<Key, Seen> seen = new HashMap<>();
 
-    private static long hashOf(HgtTile t) {
-        return t == null ? SEA_LEVEL : t.contentHash();
-    }
-
     /**
      * The slots of {@code mosaic} whose heights differ from those last seen under the same tile id (at the
      * mosaic's resolution), and remembers the mosaic's tiles as those seen now. A tile seen for the first time is
-     * no change. A tile's fingerprint is taken the second time it is seen (so that a single render, the CLI's,
-     * takes none), or when another object comes under its id; where by then the first object was collected
-     * without one, the slot counts as changed (its entries are measured again: never served stale).
+     * no change; another object with the same fingerprint is none either.
      */
     List<TileId> changed(Mosaic mosaic) {
         List<TileId> out = new ArrayList<>();
@@ -64,20 +46,14 @@ final class TileVersions {
             Key key = new Key(slot.id(), mosaic.intervalsPerDegree());
             HgtTile tile = slot.tile();
             Seen before = seen.get(key);
-            WeakReference<HgtTile> ref = tile == null ? null : new WeakReference<>(tile);
-            if (before == null) {
-                seen.put(key, new Seen(ref, UNKNOWN));
-            } else if (before.is(tile)) {
-                if (before.hash() == UNKNOWN && tile != null) {
-                    seen.put(key, new Seen(before.tile(), tile.contentHash()));
-                }
-            } else {
-                long old = before.hashNow(), now = hashOf(tile);
-                if (old == UNKNOWN || old != now) {
-                    out.add(slot.id());
-                }
-                seen.put(key, new Seen(ref, now));
+            if (before != null && before.is(tile)) {
+                continue;
             }
+            long hash = tile == null ? SEA_LEVEL : tile.contentHash();
+            if (before != null && before.hash() != hash) {
+                out.add(slot.id());
+            }
+            seen.put(key, new Seen(tile == null ? null : new WeakReference<>(tile), hash));
         }
         return out;
     }

@@ -91,6 +91,20 @@ class ResidentClientTest {
     }
 
     @Test
+    void aSocketPathTooLongForUnixIsRefusedBeforeAnythingStarts(@TempDir Path dir) throws Exception {
+        Path deep = dir.resolve("a".repeat(60)).resolve("b".repeat(60));
+        IOException e = assertThrows(IOException.class,
+                () -> ResidentClient.socket(Map.of("DEMPANO_RESIDENT_DIR", deep.toString())));
+        assertTrue(e.getMessage().contains("set DEMPANO_RESIDENT_DIR to a shorter folder"), e.getMessage());
+        long t = System.nanoTime();
+        String[] r = StartScriptTest.run(Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR", deep.toString()),
+                "--ppd", "2", "--out", dir.resolve("p").toString());
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[2].contains("shorter folder") && r[2].contains("rendering in this process"), r[2]);
+        assertTrue(System.nanoTime() - t < TimeUnit.SECONDS.toNanos(25), "no wait for a process that cannot start");
+    }
+
+    @Test
     void theIdleTimeIsWholeSecondsOrTheDefault() {
         assertEquals(ResidentClient.DEFAULT_IDLE_SECONDS, ResidentClient.idleSeconds(Map.of()));
         assertEquals(30, ResidentClient.idleSeconds(Map.of("DEMPANO_RESIDENT_IDLE_S", " 30 ")));
