@@ -354,6 +354,9 @@ final class ResidentClient {
         cmd.add(stamp(env));
         cmd.add(Integer.toString(idleSeconds(env)));
         ProcessBuilder pb = new ProcessBuilder(cmd);
+        // Its own folder as working directory: every path of a run is the client's, resolved; and the folder this
+        // client was started in is not held (kept from removal or unmounting) for as long as the process lives.
+        pb.directory(socket.getParent().toFile());
         pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         File log = logOf(socket).toFile();
         pb.redirectOutput(ProcessBuilder.Redirect.appendTo(log));

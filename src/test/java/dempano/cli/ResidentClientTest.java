@@ -159,6 +159,10 @@ class ResidentClientTest {
         Map<String, String> env = env(dir);
         long pid = firstRun(env, dir, "p1");
         assertTrue(pid != ProcessHandle.current().pid());
+        Path cwd = Path.of("/proc", Long.toString(pid), "cwd");
+        if (Files.exists(cwd)) { // Linux: it does not hold the folder it was started from
+            assertEquals(dir.resolve("sock").toRealPath(), cwd.toRealPath());
+        }
         assertTrue(Files.isRegularFile(dir.resolve("p1.png")));
         String[] second = StartScriptTest.run(env, "--ppd", "2", "--out", dir.resolve("p2").toString());
         assertEquals("0", second[0], second[2]);
