@@ -268,6 +268,9 @@ final class ResidentClient {
                 // made meanwhile by another client
             }
         }
+        if (!Files.isDirectory(dir)) {
+            throw new IOException(dir + " is not a folder");
+        }
         Set<PosixFilePermission> p = Files.getPosixFilePermissions(dir);
         if (!Files.getOwner(dir).getName().equals(System.getProperty("user.name"))
                 || p.contains(PosixFilePermission.GROUP_WRITE) || p.contains(PosixFilePermission.OTHERS_WRITE)) {

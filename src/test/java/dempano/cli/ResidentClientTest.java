@@ -88,6 +88,10 @@ class ResidentClientTest {
                 () -> ResidentClient.directory(Map.of("DEMPANO_RESIDENT_DIR", shared.toString())));
         assertTrue(e.getMessage().contains("is not this user's alone"), e.getMessage());
         assertEquals(dir.resolve("dempano"), ResidentClient.directory(Map.of("XDG_RUNTIME_DIR", dir.toString())));
+        Path file = Files.writeString(dir.resolve("a-file"), "");
+        IOException notFolder = assertThrows(IOException.class,
+                () -> ResidentClient.directory(Map.of("DEMPANO_RESIDENT_DIR", file.toString())));
+        assertTrue(notFolder.getMessage().contains("is not a folder"), notFolder.getMessage());
     }
 
     @Test
