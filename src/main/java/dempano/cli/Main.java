@@ -86,19 +86,19 @@ public final class Main implements Callable<Integer> {
 
     /** Runs the CLI and returns the exit code (for tests). */
     public static int run(String... args) {
-        return run(null, Renderers.PER_RUN, args);
+        return run(RunContext.HERE, args);
     }
 
     /**
-     * Runs the CLI with relative paths taken from {@code workingDir} (null: the process's own) and the panorama's
-     * renderer from {@code renderers}; returns the exit code. The resident process's way in.
+     * Runs the CLI with relative paths taken from the context's working directory and the renderer from its
+     * renderers; returns the exit code. The resident process's way in.
      */
-    static int run(Path workingDir, Renderers renderers, String... args) {
+    static int run(RunContext context, String... args) {
         try {
-            return commandLine(workingDir, renderers, args).execute(args);
+            return commandLine(context, args).execute(args);
         } catch (OutOfMemoryError e) {
             // The estimate made before rendering (InsufficientMemoryException) missed: say what to do, no stack trace.
-            renderers.failed(e);
+            context.renderers().failed(e);
             System.err.println("dempano: " + outOfMemoryMessage(e));
             return 1;
         }
@@ -106,11 +106,6 @@ public final class Main implements Callable<Integer> {
 
     /** Where this run's relative paths lead and its renderer comes from. */
     private RunContext context = RunContext.HERE;
-
-    /** A path option resolved against the working directory (unchanged when it is the process's own). */
-    private Path resolve(Path p) {
-        return context.resolve(p);
-    }
 
     /**
      * Where a panorama's renderer comes from: opened for the run and closed after it (the CLI), or kept open
@@ -169,9 +164,9 @@ public final class Main implements Callable<Integer> {
         return repeat == 1 ? r.withoutMeshCache() : r;
     }
 
-    private static CommandLine commandLine(Path workingDir, Renderers renderers, String... args) {
+    private static CommandLine commandLine(RunContext context, String... args) {
         Main main = new Main();
-        main.context = new RunContext(workingDir, renderers);
+        main.context = context;
         CommandLine cl = new CommandLine(main);
         if (needsSubcommands(args)) {
             cl.addSubcommand("fly", new FlyCommand());
@@ -188,7 +183,7 @@ public final class Main implements Callable<Integer> {
             return 2;
         });
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {
-            renderers.failed(ex);
+            context.renderers().failed(ex);
             PrintWriter err = c.getErr();
             if (ex instanceof IllegalArgumentException) {
                 err.println("dempano: " + ex.getMessage());
@@ -224,9 +219,9 @@ public final class Main implements Callable<Integer> {
         if (!demo && noDem) {
             throw new IllegalArgumentException("--dem-dir is needed with --lat/--lon");
         }
-        List<Path> dirs = demo ? List.of(DemoTerrain.ensure(resolve(DemoTerrain.DEFAULT_DIR)))
-                : demDirs.stream().map(this::resolve).toList();
-        Path summitsFile = resolve(this.summitsFile);
+        List<Path> dirs = demo ? List.of(DemoTerrain.ensure(context.resolve(DemoTerrain.DEFAULT_DIR)))
+                : demDirs.stream().map(context::resolve).toList();
+        Path summitsFile = context.resolve(this.summitsFile);
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         Set<Layer> wanted = panorama.layers();
         PanoramaRequest req = panorama.applyTo(PanoramaRequest.at(lat, lon), demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES)

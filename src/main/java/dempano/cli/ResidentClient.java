@@ -79,13 +79,14 @@ final class ResidentClient {
     static int run(String... args) {
         Map<String, String> env = System.getenv();
         try {
-            Path socket = socket(env);
-            ResidentProtocol.Request request = new ResidentProtocol.Request(ResidentProtocol.RENDER, stamp(env),
+            String stamp = stamp(env); // stats every jar: once a run
+            Path socket = socket(env, stamp);
+            ResidentProtocol.Request request = new ResidentProtocol.Request(ResidentProtocol.RENDER, stamp,
                     Path.of("").toAbsolutePath().toString(), List.of(args));
             for (int attempt = 1; ; attempt++) {
                 SocketChannel channel = connect(socket);
                 if (channel == null) {
-                    channel = awaitStart(socket, start(socket, env));
+                    channel = awaitStart(socket, start(socket, stamp, env));
                 }
                 try (SocketChannel ch = channel) {
                     return exchange(ch, request, System.out, System.err);
@@ -173,6 +174,14 @@ final class ResidentClient {
 
     /** A connection to the resident process at {@code socket}, or null where none listens (a stale file is removed). */
     static SocketChannel connect(Path socket) throws IOException {
+        return connect(socket, true);
+    }
+
+    /**
+     * A connection, or null where there is no socket file or nobody listens on it; {@code removeStale}: remove a file
+     * nobody listens on (not while a process may be starting: between binding and listening it refuses too).
+     */
+    private static SocketChannel connect(Path socket, boolean removeStale) throws IOException {
         if (!Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
             return null;
         }
@@ -182,11 +191,16 @@ final class ResidentClient {
             return ch;
         } catch (java.net.ConnectException | java.nio.file.NoSuchFileException e) {
             ch.close();
-            Files.deleteIfExists(socket); // left by a process that was killed: nobody listens
+            if (removeStale) {
+                Files.deleteIfExists(socket); // left by a process that was killed: nobody listens
+            }
             return null;
         } catch (IOException e) {
             ch.close();
-            throw e;
+            if (removeStale) {
+                throw e;
+            }
+            return null;
         }
     }
 
@@ -194,7 +208,7 @@ final class ResidentClient {
     private static SocketChannel awaitStart(Path socket, Process started) throws IOException {
         long until = System.nanoTime() + START_WAIT_MILLIS * 1_000_000;
         while (System.nanoTime() < until) {
-            SocketChannel ch = Files.exists(socket, LinkOption.NOFOLLOW_LINKS) ? tryConnect(socket) : null;
+            SocketChannel ch = connect(socket, false);
             if (ch != null) {
                 return ch;
             }
@@ -214,27 +228,16 @@ final class ResidentClient {
                 + logOf(socket) + ")");
     }
 
-    private static SocketChannel tryConnect(Path socket) throws IOException {
-        SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
-        try {
-            ch.connect(UnixDomainSocketAddress.of(socket));
-            return ch;
-        } catch (IOException e) {
-            ch.close();
-            return null;
-        }
-    }
-
     /** The longest socket path, bytes, that every Unix takes (Linux 107, macOS 103). */
     static final int MAX_SOCKET_PATH_BYTES = 100;
 
     /**
-     * The socket of this user's resident process for this installation and setting.
+     * The socket of this user's resident process for this installation and setting ({@code stamp}: {@link #stamp}).
      *
      * @throws IOException where its path is too long for a Unix socket (a deep {@code DEMPANO_RESIDENT_DIR})
      */
-    static Path socket(Map<String, String> env) throws IOException {
-        Path socket = directory(env).resolve(stamp(env) + ".sock");
+    static Path socket(Map<String, String> env, String stamp) throws IOException {
+        Path socket = directory(env).resolve(stamp + ".sock");
         int bytes = socket.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
         if (bytes > MAX_SOCKET_PATH_BYTES) {
             throw new IOException("the socket path " + socket + " is " + bytes + " bytes, more than a Unix socket takes ("
@@ -308,6 +311,16 @@ final class ResidentClient {
         return out;
     }
 
+    /** Every class path entry's absolute path, size and modification time, a line each. */
+    static String classPath() {
+        StringBuilder s = new StringBuilder();
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            File f = new File(entry);
+            s.append(f.getAbsolutePath()).append(' ').append(f.length()).append(' ').append(f.lastModified()).append('\n');
+        }
+        return s.toString();
+    }
+
     /**
      * A hash (16 hex digits) of what a run's result may depend on besides its arguments and working directory
      * (see the class comment).
@@ -316,10 +329,7 @@ final class ResidentClient {
         StringBuilder s = new StringBuilder();
         s.append(System.getProperty("java.home")).append('\n').append(System.getProperty("java.vm.version")).append('\n');
         jvmOptions().forEach(o -> s.append(o).append('\n'));
-        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
-            File f = new File(entry);
-            s.append(f.getAbsolutePath()).append(' ').append(f.length()).append(' ').append(f.lastModified()).append('\n');
-        }
+        s.append(classPath());
         new TreeMap<>(env).forEach((k, v) -> {
             if (shapesTheRun(k)) {
                 s.append(k).append('=').append(v).append('\n');
@@ -333,7 +343,7 @@ final class ResidentClient {
     }
 
     /** Starts a resident process for {@code socket}, detached from this terminal's process group where possible. */
-    private static Process start(Path socket, Map<String, String> env) throws IOException {
+    private static Process start(Path socket, String stamp, Map<String, String> env) throws IOException {
         List<String> cmd = new ArrayList<>();
         for (String setsid : List.of("/usr/bin/setsid", "/bin/setsid")) {
             if (Files.isExecutable(Path.of(setsid))) {
@@ -354,7 +364,7 @@ final class ResidentClient {
         cmd.add(System.getProperty("java.class.path"));
         cmd.add(ResidentServer.class.getName());
         cmd.add(socket.toString());
-        cmd.add(stamp(env));
+        cmd.add(stamp);
         cmd.add(Integer.toString(idleSeconds(env)));
         ProcessBuilder pb = new ProcessBuilder(cmd);
         // Its own folder as working directory: every path of a run is the client's, resolved; and the folder this

@@ -36,13 +36,14 @@ final class ResidentCommand implements Callable<Integer> {
             sockets = files.filter(f -> f.getFileName().toString().endsWith(".sock")).sorted().toList();
         }
         int answered = 0;
+        String stamp = ResidentClient.stamp(env);
         for (Path socket : sockets) {
             SocketChannel ch = ResidentClient.connect(socket); // a socket nobody listens on is removed
             if (ch == null) {
                 continue;
             }
             try (ch) {
-                ResidentClient.exchange(ch, new ResidentProtocol.Request(kind, ResidentClient.stamp(env),
+                ResidentClient.exchange(ch, new ResidentProtocol.Request(kind, stamp,
                         Path.of("").toAbsolutePath().toString(), List.of()), System.out, System.err);
                 answered++;
             } catch (IOException e) {

@@ -63,16 +63,7 @@ public final class ResidentServer {
     /** The socket file's identity (inode) once bound. */
     private Object fileKey;
     /** Every class path entry's path, size and modification time when this process started. */
-    private final String classPath = classPathNow();
-
-    private static String classPathNow() {
-        StringBuilder s = new StringBuilder();
-        for (String entry : System.getProperty("java.class.path").split(java.io.File.pathSeparator)) {
-            java.io.File f = new java.io.File(entry);
-            s.append(entry).append(' ').append(f.length()).append(' ').append(f.lastModified()).append('\n');
-        }
-        return s.toString();
-    }
+    private final String classPath = ResidentClient.classPath();
 
     ResidentServer(Path socket, String stamp, Duration idle) {
         this.socket = socket;
@@ -131,7 +122,7 @@ public final class ResidentServer {
                     continue; // a run under way is finished first
                 }
                 boolean idleOut = Duration.between(lastActivity, Instant.now()).compareTo(idle) > 0;
-                boolean reinstalled = !classPath.equals(classPathNow());
+                boolean reinstalled = !classPath.equals(ResidentClient.classPath());
                 if ((idleOut || reinstalled || !ours()) && server.isOpen()) {
                     log(idleOut ? "idle for " + idle.toSeconds() + " s" : reinstalled
                             ? "its class path changed (dempano rebuilt or reinstalled): clients use another process now"
@@ -285,7 +276,7 @@ public final class ResidentServer {
         System.setErr(runErr);
         try {
             runErr.printf(Locale.ROOT, "  resident process %d, run %d%n", ProcessHandle.current().pid(), run);
-            code = Main.run(Path.of(req.workingDir()), renderers, req.args().toArray(String[]::new));
+            code = Main.run(new RunContext(Path.of(req.workingDir()), renderers), req.args().toArray(String[]::new));
             runOut.flush();
             runErr.flush();
         } finally {

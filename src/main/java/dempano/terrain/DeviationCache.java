@@ -70,8 +70,8 @@ public final class DeviationCache {
             int before = map.size();
             if (!changed.isEmpty()) {
                 int n = mosaic.intervalsPerDegree();
-                map.keySet().removeIf(k -> k.intervalsPerDegree() == n && changed.stream()
-                        .anyMatch(t -> TileVersions.touches(t, n, k.globalRow(), k.globalCol())));
+                map.keySet().removeIf(k -> TileVersions.touchesAny(changed, n, k.intervalsPerDegree(), k.globalRow(),
+                        k.globalCol()));
             }
             return before - map.size();
         }

@@ -94,8 +94,7 @@ public final class MeshCache {
         while (it.hasNext()) {
             Map.Entry<Key, Entry> e = it.next();
             Key k = e.getKey();
-            if (k.intervalsPerDegree() == n && changed.stream()
-                    .anyMatch(t -> TileVersions.touches(t, n, k.globalRow(), k.globalCol()))) {
+            if (TileVersions.touchesAny(changed, n, k.intervalsPerDegree(), k.globalRow(), k.globalCol())) {
                 vertices -= e.getValue().vertices();
                 dropped.add(e.getValue().geometry());
                 it.remove();

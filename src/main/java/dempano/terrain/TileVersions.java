@@ -58,6 +58,16 @@ final class TileVersions {
         return out;
     }
 
+    /**
+     * Whether a cache entry's patch (its grid's resolution, its north-west sample) lies on the grid of
+     * {@code intervalsPerDegree} and {@linkplain #touches touches} one of {@code tiles}.
+     */
+    static boolean touchesAny(List<TileId> tiles, int intervalsPerDegree, int keyIntervalsPerDegree, long globalRow,
+                              long globalCol) {
+        return keyIntervalsPerDegree == intervalsPerDegree
+                && tiles.stream().anyMatch(t -> touches(t, intervalsPerDegree, globalRow, globalCol));
+    }
+
     /** Samples beyond a tile's edge whose patches are forgotten with it (a vertex's normal reads its neighbours). */
     static final int MARGIN_SAMPLES = 2;
 

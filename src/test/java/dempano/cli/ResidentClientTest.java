@@ -98,7 +98,7 @@ class ResidentClientTest {
     void aSocketPathTooLongForUnixIsRefusedBeforeAnythingStarts(@TempDir Path dir) throws Exception {
         Path deep = dir.resolve("a".repeat(60)).resolve("b".repeat(60));
         IOException e = assertThrows(IOException.class,
-                () -> ResidentClient.socket(Map.of("DEMPANO_RESIDENT_DIR", deep.toString())));
+                () -> ResidentClient.socket(Map.of("DEMPANO_RESIDENT_DIR", deep.toString()), "0123456789abcdef"));
         assertTrue(e.getMessage().contains("set DEMPANO_RESIDENT_DIR to a shorter folder"), e.getMessage());
         // Said before any process is started (no wait for one that cannot bind), and rendered in the client.
         String[] r = StartScriptTest.run(Map.of("DEMPANO_RESIDENT", "on", "DEMPANO_RESIDENT_DIR", deep.toString()),
@@ -195,6 +195,15 @@ class ResidentClientTest {
     void aClientStoppedDuringItsRunEndsTheResidentProcess(@TempDir Path dir) throws Exception {
         Map<String, String> env = env(dir);
         long pid = firstRun(env, dir, "p");
+        Path socket;
+        try (var files = Files.list(dir.resolve("sock"))) {
+            List<Path> sockets = files.filter(f -> f.toString().endsWith(".sock")).toList();
+            assertEquals(1, sockets.size(), sockets.toString());
+            socket = sockets.get(0); // the script's stamp, not this JVM's
+        }
+        try (var ch = ResidentClient.connect(socket)) {
+            assertTrue(ch != null, "the resident process listens there");
+        }
 
         ProcessBuilder pb = new ProcessBuilder(StartScriptTest.SCRIPT.toString(), "--ppd", "20", "--out",
                 dir.resolve("p").toString());
@@ -227,7 +236,6 @@ class ResidentClientTest {
         synchronized (seen) {
             assertTrue(seen.toString().contains("run 2"), seen.toString());
         }
-        Path socket = ResidentClient.socket(env);
         long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         boolean listening = true;
         while (listening && System.nanoTime() < until) {
