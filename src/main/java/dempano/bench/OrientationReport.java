@@ -51,7 +51,9 @@ public final class OrientationReport {
      * The altitude check: clear photos of the same poses from a reference rendered this much higher than the eye the
      * estimator's panorama assumes, metres (the photo command refines the altitude where the skyline constrains it).
      */
-    static final double ALTITUDE_TEST_METRES = 25;
+    static double ALTITUDE_TEST_METRES = 25;
+    /** Whether the five steps run ({@code --steps false}: the altitude check alone, written to orientation-altitude.md). */
+    static boolean STEPS = true;
     /**
      * Whether the fine stage against camera renders runs ({@code --fine true|false}, default false: on seed 3's
      * misses it fixed as many photos as it broke, at about 3 CPU s more per photo).
@@ -157,7 +159,15 @@ public final class OrientationReport {
               estimate may be unsure because the eye is wrong (a near ridge fits at no heading): its best pose (where
               that finds none, its second-best) is refined with the altitude so, and at the first offset of at least 5 m the
               whole search (every heading) is made again, once, against the panorama from that eye; that estimate, its margin taken there, is kept when it is
-              confident and agrees with the pose that found the offset.
+              confident and agrees with the pose that found the offset. Where neither pose finds the eye (with the eye far
+              enough off, none of the assumed eye's poses is near the truth), the whole search is made from eyes 20 m and
+              then 50 m higher (`OrientationEstimator.RAISED_EYES_METRES`), the altitude fitted from the best pose found
+              there, and the first eye so found is kept where the search made again from it is confident, agrees, and the
+              skyline fits better than the assumed eye's best pose fits it; where the skyline, all far, measures no eye, a
+              pose confident from one raised eye, fitting better than any from the assumed eye and found from the other
+              raised eye too, is kept with the eye searched from (no standard error). Only where at least 3/4 of the
+              skyline fits the assumed eye's best pose (`RAISED_EYES_MIN_INLIER_SHARE`): a skyline that fits less is more
+              likely occluded, which no eye explains, and the searches cost 3–5 s.
 
             ## Benchmark
 
@@ -193,7 +203,7 @@ public final class OrientationReport {
         for (int i = 0; i < args.length; i += 2) {
             if (i + 1 == args.length) {
                 throw new IllegalArgumentException("usage: OrientationReport [--shared DIR] [--out DIR] [--photos N]"
-                        + " [--seed S] [--fine true|false] [--only I,J,...]; " + args[i] + " has no value");
+                        + " [--seed S] [--fine true|false] [--only I,J,...] [--altitude-test-m M] [--steps true|false]; " + args[i] + " has no value");
             }
             switch (args[i]) {
                 case "--shared" -> shared = Path.of(args[i + 1]);
@@ -201,6 +211,8 @@ public final class OrientationReport {
                 case "--photos" -> photos = Integer.parseInt(args[i + 1]);
                 case "--seed" -> seed = Long.parseLong(args[i + 1]);
                 case "--fine" -> FINE = Boolean.parseBoolean(args[i + 1]);
+                case "--steps" -> STEPS = Boolean.parseBoolean(args[i + 1]);
+                case "--altitude-test-m" -> ALTITUDE_TEST_METRES = Double.parseDouble(args[i + 1]);
                 case "--only" -> only = java.util.Arrays.stream(args[i + 1].split(",")).filter(x -> !x.isBlank())
                         .map(Integer::valueOf).collect(java.util.stream.Collectors.toSet());
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
@@ -267,7 +279,7 @@ public final class OrientationReport {
                     }
                     CameraOrientation truth = new CameraOrientation(heading, pitch, roll);
                     double skylineMetres = SyntheticPhoto.skylineDistanceMetres(ref, PHOTO_W, PHOTO_H, truth, hfov);
-                    for (SyntheticPhoto.Step step : SyntheticPhoto.Step.values()) {
+                    for (SyntheticPhoto.Step step : STEPS ? SyntheticPhoto.Step.values() : new SyntheticPhoto.Step[0]) {
                         BufferedImage photo = SyntheticPhoto.render(ref, PHOTO_W, PHOTO_H, truth, hfov, step, photoSeed);
                         long t1 = System.nanoTime();
                         double c1 = processCpuSeconds();
@@ -325,11 +337,23 @@ public final class OrientationReport {
                                 (System.nanoTime() - t1) / 1e9));
                     }
                     photoIndex++;
-                    Row last = rows.get(rows.size() - 1);
-                    System.err.printf(Locale.ROOT, "  photo %d: truth %.2f° (%.1f° fov); clear %.3f°, clouds %.3f° off%n",
-                            last.photo(), heading, hfov, rows.get(rows.size() - 5).headingError(), last.headingError());
+                    AltitudeRow up = altitudeRows.get(altitudeRows.size() - 1);
+                    if (STEPS) {
+                        Row last = rows.get(rows.size() - 1);
+                        System.err.printf(Locale.ROOT, "  photo %d: truth %.2f° (%.1f° fov); clear %.3f°, clouds %.3f° off%n",
+                                last.photo(), heading, hfov, rows.get(rows.size() - 5).headingError(), last.headingError());
+                    }
+                    System.err.printf(Locale.ROOT, "  photo %d, eye %.0f m up: %.3f° off%s, altitude %+.1f m, %.1f s%n", up.photo(),
+                            ALTITUDE_TEST_METRES, OrientationEstimator.headingGap(up.free().headingDeg(), heading),
+                            up.free().unsure() ? " (unsure)" : "", up.free().altitudeOffsetMetres(), up.seconds());
                 }
             }
+        }
+        if (!STEPS) {
+            writeAltitudeCsv(altitudeRows, out.resolve("orientation-altitude.csv"));
+            Files.writeString(out.resolve("orientation-altitude.md"), altitudeMarkdown(altitudeRows));
+            System.out.println("wrote " + out.resolve("orientation-altitude.md"));
+            return;
         }
         writeCsv(rows, out.resolve("orientation.csv"));
         chart(rows, out.resolve("orientation.png"));
@@ -354,12 +378,18 @@ public final class OrientationReport {
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
                 + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better;"
                 + " an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
-                + " eye found at least 5 m off, kept when it is confident there)."
+                + " eye found at least 5 m off, kept when it is confident there; where neither finds an eye, the whole search is"
+                + " made from eyes " + OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> String.format(Locale.ROOT, "%.0f", m))
+                        .collect(java.util.stream.Collectors.joining(" and "))
+                + " m higher in turn (where at least " + Math.round(100 * OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE)
+                + " % of the skyline fits the assumed eye's best pose) and the altitude fitted from the pose found there,"
+                + " kept on the same terms, or, where the skyline measures no eye, a pose confident from one raised eye and"
+                + " found from the other too)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
                 ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,
                 OrientationEstimator.ALTITUDE_SIGNIFICANCE));
         b.append("| altitude | photos | heading ≤ 0.5° | heading ≤ 2° | median heading error | median FOV error | flagged unsure"
-                + " | heading > 5° off and not flagged | altitude estimated | median altitude error | median match time |\n");
+                + " | heading > 5° off and not flagged | altitude measured | median altitude error | median match time |\n");
         b.append("|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (boolean refined : new boolean[] {false, true}) {
             java.util.function.Function<AltitudeRow, OrientationEstimate> est = refined ? AltitudeRow::free : AltitudeRow::pinned;
@@ -371,7 +401,7 @@ public final class OrientationReport {
             long unsure = rows.stream().filter(r -> est.apply(r).unsure()).count();
             long confidentWrong = rows.stream().filter(r -> !est.apply(r).unsure()
                     && AltitudeRow.headingError(est.apply(r), r.headingDeg()) > 5).count();
-            double[] alt = rows.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres()))
+            double[] alt = rows.stream().filter(r -> measured(r.free()))
                     .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES)).toArray();
             b.append(String.format(Locale.ROOT, "| %s | %d | %.0f %% | %.0f %% | %.2f° | %.2f %% | %.0f %% | %d | %s | %s | %s |%n",
                     refined ? "refined" : "pinned (assumed eye)", n, 100.0 * within05 / n, 100.0 * within2 / n, median(he),
@@ -384,18 +414,25 @@ public final class OrientationReport {
         b.append(String.format(Locale.ROOT, "%nAltitude estimates by skyline distance: %s.%n",
                 java.util.stream.Stream.of(true, false).map(isFar -> {
                     List<AltitudeRow> rs = rows.stream().filter(r -> (r.skylineMetres() >= NEAR_SKYLINE_M) == isFar).toList();
-                    double[] a = rs.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres()))
+                    double[] a = rs.stream().filter(r -> measured(r.free()))
                             .mapToDouble(r -> r.free().altitudeOffsetMetres()).toArray();
                     double[] sig = rs.stream().filter(r -> Double.isFinite(r.free().altitudeSigmaMetres()))
                             .mapToDouble(r -> r.free().altitudeSigmaMetres()).toArray();
                     return String.format(Locale.ROOT, "skyline %s 1 km: %d of %d photos, median %.1f m, median standard error %.1f m",
                             isFar ? "≥" : "<", a.length, rs.size(), median(a), median(sig));
                 }).collect(java.util.stream.Collectors.joining("; "))));
-        double[] z = rows.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres()))
+        double[] z = rows.stream().filter(r -> measured(r.free()))
                 .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES) / r.free().altitudeSigmaMetres())
                 .toArray();
-        long within2 = Arrays.stream(z).filter(v -> v <= 2).count(), off5 = rows.stream()
+        long within2 = Arrays.stream(z).filter(v -> v <= 2).count(), off5 = rows.stream().filter(r -> measured(r.free()))
                 .filter(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES) > 5).count();
+        List<AltitudeRow> searched = rows.stream().filter(r -> Double.isFinite(r.free().altitudeOffsetMetres())
+                && !measured(r.free())).toList();
+        b.append(String.format(Locale.ROOT, "%nPoses found from a raised eye whose altitude the skyline does not measure (all"
+                        + " of it far; the photo's inner depth edges told the eyes apart): %d, of which %d within 0.5° and %d"
+                        + " more than 5° off (the eye reported is the one searched from, without a standard error).%n",
+                searched.size(), searched.stream().filter(r -> AltitudeRow.headingError(r.free(), r.headingDeg()) <= 0.5).count(),
+                searched.stream().filter(r -> AltitudeRow.headingError(r.free(), r.headingDeg()) > 5).count()));
         b.append(String.format(Locale.ROOT, "%nThe standard error is formal (from the fit's residuals, at least %.1f px each):"
                         + " %d of %d kept offsets are within 2 standard errors of the truth (median |error| / standard error %.2f;"
                         + " 0.67 if it were a calibrated normal one), and %d are more than 5 m off.%n",
@@ -403,13 +440,20 @@ public final class OrientationReport {
         return b.toString();
     }
 
+    /** Whether an estimate's altitude offset was measured (fitted, with a standard error), not only searched from. */
+    static boolean measured(OrientationEstimate e) {
+        return Double.isFinite(e.altitudeOffsetMetres()) && Double.isFinite(e.altitudeSigmaMetres());
+    }
+
     static void writeAltitudeCsv(List<AltitudeRow> rows, Path file) throws IOException {
         StringBuilder b = new StringBuilder("scene,photo,heading_deg,hfov_deg,skyline_km,pinned_heading_deg,pinned_hfov_deg,"
-                + "pinned_unsure,heading_deg_refined,hfov_deg_refined,unsure_refined,altitude_offset_m,altitude_sigma_m,seconds\n");
+                + "pinned_unsure,pinned_inlier_share,pinned_residual_px,heading_deg_refined,hfov_deg_refined,unsure_refined,"
+                + "altitude_offset_m,altitude_sigma_m,seconds\n");
         for (AltitudeRow r : rows) {
-            b.append(String.format(Locale.ROOT, "%s,%d,%.4f,%.4f,%.2f,%.4f,%.4f,%s,%.4f,%.4f,%s,%.2f,%.2f,%.3f%n", r.scene(),
+            b.append(String.format(Locale.ROOT, "%s,%d,%.4f,%.4f,%.2f,%.4f,%.4f,%s,%.3f,%.3f,%.4f,%.4f,%s,%.2f,%.2f,%.3f%n", r.scene(),
                     r.photo(), r.headingDeg(), r.hfovDeg(), r.skylineMetres() / 1000, r.pinned().headingDeg(),
-                    r.pinned().hfovDeg(), r.pinned().unsure(), r.free().headingDeg(), r.free().hfovDeg(), r.free().unsure(),
+                    r.pinned().hfovDeg(), r.pinned().unsure(), r.pinned().inlierShare(), r.pinned().residualPx(),
+                    r.free().headingDeg(), r.free().hfovDeg(), r.free().unsure(),
                     r.free().altitudeOffsetMetres(), r.free().altitudeSigmaMetres(), r.seconds()));
         }
         Files.writeString(file, b);

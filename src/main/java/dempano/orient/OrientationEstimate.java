@@ -40,9 +40,13 @@ package dempano.orient;
  *                          unsure from every eye tried. When given, the pose and the residual, share and score are
  *                          those of the pose fitted with it; the margin and the unsure flag compare headings at the
  *                          assumed eye when the estimate was confident there, else at the eye found (see
- *                          {@link OrientationEstimator#withAltitude})
+ *                          {@link OrientationEstimator#withAltitude}). With a NaN standard error, the eye the pose was
+ *                          found from, not a measurement: one of {@link OrientationEstimator#RAISED_EYES_METRES}, from
+ *                          which the photo fits confidently and better than from the assumed eye while the skyline
+ *                          does not measure the altitude
  * @param altitudeSigmaMetres the offset's standard error, metres (from the fit's residuals, at least
- *                          {@link OrientationEstimator#ALTITUDE_RESIDUAL_FLOOR_PX} px each); NaN where not estimated
+ *                          {@link OrientationEstimator#ALTITUDE_RESIDUAL_FLOOR_PX} px each); NaN where not estimated,
+ *                          or where the offset is an eye searched from and not measured (see above)
  */
 public record OrientationEstimate(double headingDeg, double pitchDeg, double rollDeg, double hfovDeg,
                                   double residualPx, double inlierShare, double score, double edgeScore,
@@ -95,6 +99,9 @@ public record OrientationEstimate(double headingDeg, double pitchDeg, double rol
                         + " residual %.2f px, %.0f %% of %d skyline samples fit, edge score %.3f, margin %.3f over heading %.1f°%s",
                 headingDeg, pitchDeg, rollDeg, hfovDeg, residualPx, 100 * inlierShare, samples, edgeScore, marginScore,
                 secondHeadingDeg(), unsure ? " — UNSURE" : "") + (Double.isNaN(altitudeOffsetMetres) ? ""
+                : Double.isNaN(altitudeSigmaMetres) ? String.format(java.util.Locale.ROOT,
+                        "; found from an eye %+.0f m from the altitude assumed (not measured: the skyline does not tell)",
+                        altitudeOffsetMetres)
                 : String.format(java.util.Locale.ROOT, "; eye %+.1f ± %.1f m from the altitude assumed", altitudeOffsetMetres,
                 altitudeSigmaMetres));
     }

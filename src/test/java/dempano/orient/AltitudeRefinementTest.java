@@ -109,6 +109,108 @@ class AltitudeRefinementTest {
     }
 
     @Test
+    void anEyeSoFarOffThatNoPoseOfTheAssumedEyeIsNearIsFoundByASearchFromARaisedEye() {
+        // 30 m higher than assumed, looking at 310°: from the assumed eye the best pose is 141° off, and the fit from it
+        // and from the second-best finds no eye the search agrees with; the search made from the raised eyes finds the
+        // pose, the fit from there the eye (before the raised eyes, the estimate stayed unsure and 141° off).
+        double heading = 310, truth = 30;
+        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure(), pinned.summary());
+        assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 90, pinned.summary());
+        java.util.List<Double> eyes = new java.util.ArrayList<>();
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+            eyes.add(m);
+            return reference(m, false);
+        }, priors);
+        String what = e.summary() + " (altitude pinned: " + pinned.summary() + "); eyes rendered " + eyes;
+        assertFalse(e.unsure(), what);
+        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
+        assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
+        assertTrue(eyes.contains(OrientationEstimator.RAISED_EYES_METRES.get(0)), what);
+    }
+
+    /** Far ridges that repeat every 120°: from the assumed eye, three headings fit any photo about equally. */
+    static final DoubleUnaryOperator REPEATING_FAR = az -> 1800 + 400 * Math.sin(Math.toRadians(6 * az) + 0.4)
+            + 250 * Math.sin(Math.toRadians(21 * az) + 2.1);
+
+    /**
+     * A reference whose skyline is {@code elevationDeg} (as a 10 px/° panorama's rows quantize it) and lies all
+     * {@link #FAR_METRES} away, whatever the eye: one whose altitude the skyline cannot measure.
+     */
+    static OrientationEstimator.Reference allFar(DoubleUnaryOperator elevationDeg) {
+        double ppd = 10, top = 45;
+        double[] el = new double[3600], d = new double[3600];
+        for (int c = 0; c < el.length; c++) {
+            int r = (int) Math.ceil((top - elevationDeg.applyAsDouble((c + 0.5) / ppd)) * ppd - 0.5);
+            el[c] = top - r / ppd;
+            d[c] = FAR_METRES;
+        }
+        return new OrientationEstimator.Reference(new HorizonProfile(el, d, ppd), null);
+    }
+
+    @Test
+    void aPoseConfidentFromBothRaisedEyesIsKeptWithTheEyeSearchedFromWhereTheSkylineCannotMeasureIt() {
+        // Stands for a summit whose own slopes (not the far skyline) change as the eye rises: from the assumed eye the
+        // view is ambiguous, from the raised eyes the photo's skyline is seen, but all of it 25 km away, so no fit can
+        // tell the eye's height (raising it moves every column alike, as pitch does).
+        double heading = 123.4;
+        Skyline sky = SyntheticSkyline.project(horizon(30), W, H, new CameraOrientation(heading, 1, 0.5), 50);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(REPEATING_FAR, REPEATING_FAR, 0, true);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure(), pinned.summary());
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
+                m -> allFar(horizon(30)), priors);
+        String what = e.summary() + " (assumed eye: " + pinned.summary() + ")";
+        assertFalse(e.unsure(), what);
+        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
+        assertEquals(OrientationEstimator.RAISED_EYES_METRES.get(0), e.altitudeOffsetMetres(), 0, what);
+        assertTrue(Double.isNaN(e.altitudeSigmaMetres()), what);
+        assertTrue(e.summary().contains("not measured"), what);
+    }
+
+    @Test
+    void aPoseConfidentFromOneRaisedEyeOnlyIsNotKept() {
+        // The same, but from the second raised eye the view is turned by 90°: the eyes disagree, the estimate stays
+        // as it was.
+        Skyline sky = SyntheticSkyline.project(horizon(30), W, H, new CameraOrientation(123.4, 1, 0.5), 50);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(REPEATING_FAR, REPEATING_FAR, 0, true);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure(), pinned.summary());
+        DoubleUnaryOperator skyline = horizon(30), turned = az -> skyline.applyAsDouble(az + 90);
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
+                m -> allFar(m == OrientationEstimator.RAISED_EYES_METRES.get(0) ? skyline : turned), priors);
+        assertSame(pinned, e, e.summary());
+    }
+
+    @Test
+    void aSkylineAQuarterOfWhichFitsNoPoseIsNotSearchedFromRaisedEyes() {
+        // The photo of the test above with 35 % of its columns covered by something standing 40 px above the skyline
+        // (trees, a building): an occluder, which no eye explains; the raised eyes are not even rendered.
+        Skyline clear = SyntheticSkyline.project(horizon(30), W, H, new CameraOrientation(123.4, 1, 0.5), 50);
+        double[] rows = clear.rowPx().clone();
+        for (int i = rows.length / 3; i < rows.length / 3 + (int) (0.35 * rows.length); i++) {
+            rows[i] = Math.max(0, rows[i] - 40);
+        }
+        Skyline sky = new Skyline(clear.widthPx(), clear.heightPx(), rows, clear.weight());
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(REPEATING_FAR, REPEATING_FAR, 0, true);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure() && pinned.inlierShare() < OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE, pinned.summary());
+        java.util.List<Double> eyes = new java.util.ArrayList<>();
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+            eyes.add(m);
+            return allFar(horizon(30));
+        }, priors);
+        assertFalse(eyes.stream().anyMatch(OrientationEstimator.RAISED_EYES_METRES::contains), "eyes rendered " + eyes);
+        assertTrue(e.unsure(), e.summary());
+    }
+
+    @Test
     void aSkylineThatRepeatsStaysUnsureFromAnyEye() {
         // Both ridges repeat every 120°: three headings fit equally from every eye, so a better altitude cannot make
         // the estimate sure, whether the eye was right or 30 m off.
