@@ -382,7 +382,7 @@ public final class OrientationReport {
                 + " made from eyes " + OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> String.format(Locale.ROOT, "%.0f", m))
                         .collect(java.util.stream.Collectors.joining(" and "))
                 + " m higher in turn (where at least " + Math.round(100 * OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE)
-                + " % of the skyline fits the assumed eye's best pose) and the altitude fitted from the pose found there,"
+                + " %% of the skyline fits the assumed eye's best pose) and the altitude fitted from the pose found there,"
                 + " kept on the same terms, or, where the skyline measures no eye, a pose confident from one raised eye and"
                 + " found from the other too)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
