@@ -409,8 +409,7 @@ public final class OrientationEstimator {
         OrientationEstimate.Pose p0 = e.pose();
         double assumedBest = score(residualsPx(new Hypothesis(p0.headingDeg(), p0.pitchDeg(), p0.rollDeg(), p0.hfovDeg(),
                 Double.NaN), fine, sky.widthPx(), sky.heightPx(), at0.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
-        List<OrientationEstimate> found = new ArrayList<>();
-        List<Double> eyes = new ArrayList<>();
+        List<Searched> found = new ArrayList<>();
         for (double metres : RAISED_EYES_METRES) {
             Reference up;
             try {
@@ -419,9 +418,8 @@ public final class OrientationEstimator {
                 continue;
             }
             OrientationEstimate there = estimate(sky, edges, up.profile(), up.field(), priors);
-            found.add(there);
-            eyes.add(metres);
-            AltitudeFit a = altitudeFit(there.pose(), sky, at0, metres, up, assumedBest, raised, priors, 0);
+            found.add(new Searched(metres, there));
+            AltitudeFit a = altitudeFit(there.pose(), sky, at0, new Eye(metres, up), assumedBest, raised, priors, 0);
             if (a == null) {
                 continue;
             }
@@ -435,18 +433,26 @@ public final class OrientationEstimator {
         // The skyline may not measure the eye (all of it far away) while the photo's inner depth edges (a summit's own
         // slopes) still tell the eyes apart: a pose confident from a raised eye, fitting better than any from the
         // assumed eye, whose heading the other raised eye's search found too.
-        for (int i = 0; i < found.size(); i++) {
-            OrientationEstimate there = found.get(i);
+        for (Searched s : found) {
+            OrientationEstimate there = s.estimate();
             if (there.unsure() || !(there.score() < e.score())) {
                 continue;
             }
-            for (int j = 0; j < found.size(); j++) {
-                if (j != i && headingGap(found.get(j).headingDeg(), there.headingDeg()) <= DISTINCT_HEADING_DEG) {
-                    return there.withAltitudeOffset(eyes.get(i), Double.NaN, e.seconds() + (System.nanoTime() - t0) / 1e9);
+            for (Searched other : found) {
+                if (other != s && headingGap(other.estimate().headingDeg(), there.headingDeg()) <= DISTINCT_HEADING_DEG) {
+                    return there.withAltitudeOffset(s.metres(), Double.NaN, e.seconds() + (System.nanoTime() - t0) / 1e9);
                 }
             }
         }
         return e;
+    }
+
+    /** An eye {@code metres} above the one assumed, and the reference seen from there. */
+    record Eye(double metres, Reference reference) {
+    }
+
+    /** The estimate of a whole search made from an eye {@code metres} above the one assumed. */
+    private record Searched(double metres, OrientationEstimate estimate) {
     }
 
     /**
@@ -487,17 +493,16 @@ public final class OrientationEstimator {
      */
     static AltitudeFit altitudeFit(OrientationEstimate.Pose start, Skyline sky, Reference at0, RaisedReference raised,
                                    OrientationPriors priors, double minMetres) {
-        return altitudeFit(start, sky, at0, 0, at0, Double.NaN, raised, priors, minMetres);
+        return altitudeFit(start, sky, at0, new Eye(0, at0), Double.NaN, raised, priors, minMetres);
     }
 
     /**
      * As {@link #altitudeFit(OrientationEstimate.Pose, Skyline, Reference, RaisedReference, OrientationPriors, double)},
-     * starting from the eye {@code startMetres} above the one assumed ({@code startRef} seen from there), and kept only
-     * where the skyline fits better than {@code before} (NaN: than the start pose fits it from the assumed eye).
+     * starting from the eye {@code from}, and kept only where the skyline fits better than {@code before} (NaN: than
+     * the start pose fits it from the assumed eye).
      */
-    static AltitudeFit altitudeFit(OrientationEstimate.Pose start, Skyline sky, Reference at0, double startMetres,
-                                   Reference startRef, double before, RaisedReference raised, OrientationPriors priors,
-                                   double minMetres) {
+    static AltitudeFit altitudeFit(OrientationEstimate.Pose start, Skyline sky, Reference at0, Eye from, double before,
+                                   RaisedReference raised, OrientationPriors priors, double minMetres) {
         int w = sky.widthPx(), h = sky.heightPx();
         Samples fine = Samples.of(sky, FINE_SAMPLES);
         Target skyOnly = Target.of(fine, PhotoEdges.NONE, null, priors.lens());
@@ -505,15 +510,15 @@ public final class OrientationEstimator {
         if (Double.isNaN(before)) {
             before = score(residualsPx(pose, fine, w, h, at0.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
         }
-        double offset = startMetres, sigma = Double.NaN, previous = Double.NaN;
-        Reference ref = startRef;
+        double offset = from.metres(), sigma = Double.NaN, previous = Double.NaN;
+        Reference ref = from.reference();
         for (int renders = 0; renders < ALTITUDE_RENDERS; renders++) {
             double[] step = altitudeStep(pose, skyOnly, w, h, ref.profile(), priors);
             if (step == null) {
                 return null; // not constrained
             }
             sigma = step[1];
-            if (renders == 0 && startMetres == 0
+            if (renders == 0 && from.metres() == 0
                     && (Math.abs(step[0]) < ALTITUDE_SIGNIFICANCE * sigma || Math.abs(step[0]) < minMetres)) {
                 return null; // no offset the skyline tells apart from none, or too small to look for
             }
