@@ -153,7 +153,10 @@ public final class OrientationReport {
               proposes an offset; the panorama is rendered again from there (raising the eye also shows terrain a near slope
               hid, which the first order misses: 17 → 22.5 → 25.4 m for a true 25), the pose refined, and the step
               repeated, at most 4 renders. Kept when its standard error is at most 5 m, it is at least 2 standard errors
-              from 0 and the skyline fits better;
+              from 0 and the skyline fits better; the standard error is the larger of the formal one (the residuals'
+              variance, at least 0.5 px, times the normal matrix's inverse) and a delete-a-block jackknife's (the skyline
+              cut into 10 blocks, each left out in turn, the spread of the estimates from the rest: neighbouring samples err
+              alike where the DEM draws a ridge a little off, and one near slope alone may decide the altitude);
               `altitudeOffsetMetres` ± `altitudeSigmaMetres` in `P-orientation.json`, and the photo's own render uses it.
               The margin and the unsure flag of a confident estimate still compare headings at the assumed eye. An unsure
               estimate may be unsure because the eye is wrong (a near ridge fits at no heading): its best pose (where
@@ -376,8 +379,8 @@ public final class OrientationReport {
                 + " with the altitude pinned at the assumed eye and refined as the photo command does"
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
-                + " standard error is at most %.0f m, it is at least %.0f standard errors from 0 and the skyline fits better;"
-                + " an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
+                + " standard error (the larger of the formal one and a block jackknife's) is at most %.0f m, it is at least"
+                + " %.0f standard errors from 0 and the skyline fits better; an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
                 + " eye found at least 5 m off, kept when it is confident there; where neither finds an eye, the whole search is"
                 + " made from eyes " + OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> String.format(Locale.ROOT, "%.0f", m))
                         .collect(java.util.stream.Collectors.joining(" and "))
@@ -433,10 +436,12 @@ public final class OrientationReport {
                         + " more than 5° off (the eye reported is the one searched from, without a standard error).%n",
                 searched.size(), searched.stream().filter(r -> AltitudeRow.headingError(r.free(), r.headingDeg()) <= 0.5).count(),
                 searched.stream().filter(r -> AltitudeRow.headingError(r.free(), r.headingDeg()) > 5).count()));
-        b.append(String.format(Locale.ROOT, "%nThe standard error is formal (from the fit's residuals, at least %.1f px each):"
+        b.append(String.format(Locale.ROOT, "%nThe standard error is the larger of the formal one (from the fit's residuals,"
+                        + " at least %.1f px each) and a delete-a-block jackknife's (%d blocks of the skyline):"
                         + " %d of %d kept offsets are within 2 standard errors of the truth (median |error| / standard error %.2f;"
                         + " 0.67 if it were a calibrated normal one), and %d are more than 5 m off.%n",
-                OrientationEstimator.ALTITUDE_RESIDUAL_FLOOR_PX, within2, z.length, median(z), off5));
+                OrientationEstimator.ALTITUDE_RESIDUAL_FLOOR_PX, OrientationEstimator.ALTITUDE_JACKKNIFE_BLOCKS, within2, z.length,
+                median(z), off5));
         return b.toString();
     }
 
