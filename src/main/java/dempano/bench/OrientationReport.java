@@ -50,6 +50,8 @@ public final class OrientationReport {
     /**
      * The altitude check: clear photos of the same poses from a reference rendered this much higher than the eye the
      * estimator's panorama assumes, metres (the photo command refines the altitude where the skyline constrains it).
+     * Negative: the photos from the ground's eye, and the estimator's panoramas from that much higher (an altitude
+     * given too high, as an EXIF GPS altitude may be).
      */
     static double ALTITUDE_TEST_METRES = 25;
     /** Whether the five steps run ({@code --steps false}: the altitude check alone, written to orientation-altitude.md). */
@@ -170,7 +172,9 @@ public final class OrientationReport {
               pose confident from one raised eye, fitting better than any from the assumed eye and found from the other
               raised eye too, is kept with the eye searched from (no standard error). Only where at least 3/4 of the
               skyline fits the assumed eye's best pose (`RAISED_EYES_MIN_INLIER_SHARE`): a skyline that fits less is more
-              likely occluded, which no eye explains, and the searches cost 3–5 s.
+              likely occluded, which no eye explains, and the searches cost 3–5 s. After each raised eye, the eye as much
+              lower is searched where the assumed eye stands that far above the ground (an altitude given, as an EXIF GPS
+              altitude, may be tens of metres too high; at the ground the renderer refuses a lower eye at once).
 
             ## Benchmark
 
@@ -241,8 +245,8 @@ public final class OrientationReport {
                         .withLayers(java.util.Set.of(Layer.LATITUDE, Layer.LONGITUDE)));
                 SyntheticPhoto.MissingData missing = new SyntheticPhoto.MissingData(ref, dem.files()::containsKey);
                 refSeconds.add((System.nanoTime() - t0) / 1e9);
-                Panorama refUp = reference.render(base.withOffsetMetres(ALTITUDE_TEST_METRES).withPixelsPerDegree(REFERENCE_PPD)
-                        .withElevationRange(new ElevationRange(-45, 45, false)).withColour(true));
+                Panorama refUp = ALTITUDE_TEST_METRES <= 0 ? ref : reference.render(base.withOffsetMetres(ALTITUDE_TEST_METRES)
+                        .withPixelsPerDegree(REFERENCE_PPD).withElevationRange(new ElevationRange(-45, 45, false)).withColour(true));
                 t0 = System.nanoTime();
                 double c0 = processCpuSeconds();
                 Panorama est = gl.render(base.withPixelsPerDegree(ESTIMATOR_PPD)
@@ -256,6 +260,12 @@ public final class OrientationReport {
                         gl.render(estBase.withOffsetMetres(m)));
                 glSeconds.add((System.nanoTime() - t0) / 1e9);
                 glCpuSeconds.add(processCpuSeconds() - c0);
+                // The altitude check's assumed eye: the ground's, or, for a negative test, that much above it.
+                double assumedOffset = Math.max(0, -ALTITUDE_TEST_METRES);
+                OrientationEstimator.Reference checkAt0 = assumedOffset == 0 ? at0
+                        : dempano.orient.PhotoOrientation.reference(gl.render(estBase.withOffsetMetres(assumedOffset)));
+                OrientationEstimator.RaisedReference checkRaised = assumedOffset == 0 ? raised
+                        : m -> dempano.orient.PhotoOrientation.reference(gl.render(estBase.withOffsetMetres(assumedOffset + m)));
                 System.err.printf(Locale.ROOT, "%s: reference %.1f s, OpenGL %.1f s%n", scene.name(),
                         refSeconds.get(s), glSeconds.get(s));
                 for (int p = 0; p < n; p++) {
@@ -320,7 +330,8 @@ public final class OrientationReport {
                                     Locale.ROOT, "%s-%02d-%s.png", scene.name(), row.photo(), step.name().toLowerCase(Locale.ROOT))).toFile());
                         }
                     }
-                    // The altitude check: the clear photo of the same pose from the reference 25 m up.
+                    // The altitude check: the clear photo of the same pose from the reference 25 m up (or the estimator's
+                    // eye that much up, for a negative test).
                     {
                         BufferedImage photo = SyntheticPhoto.render(refUp, PHOTO_W, PHOTO_H, truth, hfov,
                                 SyntheticPhoto.Step.CLEAR, photoSeed);
@@ -329,8 +340,9 @@ public final class OrientationReport {
                         OrientationEstimate pinned, free;
                         try {
                             PhotoEdges edges = PhotoEdges.extract(photo, sky);
-                            pinned = OrientationEstimator.estimate(sky, edges, profile, field, OrientationPriors.NONE);
-                            free = OrientationEstimator.withAltitude(pinned, sky, edges, at0, raised, ALTITUDE_FREE);
+                            pinned = OrientationEstimator.estimate(sky, edges, checkAt0.profile(), checkAt0.field(),
+                                    OrientationPriors.NONE);
+                            free = OrientationEstimator.withAltitude(pinned, sky, edges, checkAt0, checkRaised, ALTITUDE_FREE);
                         } catch (IllegalArgumentException ex) {
                             pinned = free = new OrientationEstimate(Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
                                     0, 1, Double.NaN, null, Double.NaN, true, 0, 0, Double.NaN, Double.NaN);
@@ -346,7 +358,7 @@ public final class OrientationReport {
                         System.err.printf(Locale.ROOT, "  photo %d: truth %.2f° (%.1f° fov); clear %.3f°, clouds %.3f° off%n",
                                 last.photo(), heading, hfov, rows.get(rows.size() - 5).headingError(), last.headingError());
                     }
-                    System.err.printf(Locale.ROOT, "  photo %d, eye %.0f m up: %.3f° off%s, altitude %+.1f m, %.1f s%n", up.photo(),
+                    System.err.printf(Locale.ROOT, "  photo %d, eye %+.0f m: %.3f° off%s, altitude %+.1f m, %.1f s%n", up.photo(),
                             ALTITUDE_TEST_METRES, OrientationEstimator.headingGap(up.free().headingDeg(), heading),
                             up.free().unsure() ? " (unsure)" : "", up.free().altitudeOffsetMetres(), up.seconds());
                 }
@@ -373,9 +385,13 @@ public final class OrientationReport {
     /** The altitude check's table. */
     static String altitudeMarkdown(List<AltitudeRow> rows) {
         StringBuilder b = new StringBuilder();
-        b.append(String.format(Locale.ROOT, "%n## The eye %.0f m higher than assumed%n%n", ALTITUDE_TEST_METRES));
-        b.append(String.format(Locale.ROOT, "Clear photos of the same poses rendered by the CPU reference from %.0f m above the eye"
-                + " the OpenGL panorama assumes (GPS altitudes, and the DEM under a summit, are often that far off), oriented"
+        boolean lower = ALTITUDE_TEST_METRES < 0;
+        b.append(String.format(Locale.ROOT, "%n## The eye %.0f m %s than assumed%n%n", Math.abs(ALTITUDE_TEST_METRES),
+                lower ? "lower" : "higher"));
+        b.append(String.format(Locale.ROOT, "Clear photos of the same poses rendered by the CPU reference from %.0f m %s the eye"
+                + " the OpenGL panorama assumes (GPS altitudes, and the DEM under a summit, are often that far off"
+                + (lower ? "; here the photos are the clear ones above, and the OpenGL panoramas are rendered from that much above"
+                + " the ground, as from an EXIF GPS altitude too high" : "") + "), oriented"
                 + " with the altitude pinned at the assumed eye and refined as the photo command does"
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
@@ -384,12 +400,13 @@ public final class OrientationReport {
                 + " eye found at least 5 m off, kept when it is confident there; where neither finds an eye, the whole search is"
                 + " made from eyes " + OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> String.format(Locale.ROOT, "%.0f", m))
                         .collect(java.util.stream.Collectors.joining(" and "))
-                + " m higher in turn (where at least " + Math.round(100 * OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE)
+                + " m higher in turn, each followed by as much lower where the assumed eye is that far above the ground (where at least " + Math.round(100 * OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE)
                 + " %% of the skyline fits the assumed eye's best pose) and the altitude fitted from the pose found there,"
                 + " kept on the same terms, or, where the skyline measures no eye, a pose confident from one raised eye and"
                 + " found from the other too)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
-                ALTITUDE_TEST_METRES, OrientationEstimator.ALTITUDE_RENDERS, OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,
+                Math.abs(ALTITUDE_TEST_METRES), lower ? "below" : "above", OrientationEstimator.ALTITUDE_RENDERS,
+                OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,
                 OrientationEstimator.ALTITUDE_SIGNIFICANCE));
         b.append("| altitude | photos | heading ≤ 0.5° | heading ≤ 2° | median heading error | median FOV error | flagged unsure"
                 + " | heading > 5° off and not flagged | altitude measured | median altitude error | median match time |\n");

@@ -398,9 +398,11 @@ public final class OrientationEstimator {
      * kept. Where no fit finds an eye (the skyline all far: raising the eye moves it as pitch does) a pose confident
      * from one raised eye, scoring better than the assumed eye's best, whose heading the other raised eye's search
      * found too, is kept with that eye as its offset and no standard error (the photo's inner depth edges, a summit's
-     * own slopes, told the eyes apart). Else the estimate is returned as it was. Raised only: with no altitude given
-     * the eye is assumed at the ground, and a DEM's cells under a summit or ridge are lower than the top. Called only
-     * where at least {@link #RAISED_EYES_MIN_INLIER_SHARE} of the skyline fits the assumed eye's best pose.
+     * own slopes, told the eyes apart). Else the estimate is returned as it was. Lowered eyes too, after each raised one
+     * ({@link #searchedEyesMetres}), where the eye assumed stands high enough above the ground (an altitude given);
+     * with no altitude given the eye is assumed at the ground, they are refused at once, and only raised eyes are
+     * searched (a DEM's cells under a summit or ridge are lower than the top). Called only where at least
+     * {@link #RAISED_EYES_MIN_INLIER_SHARE} of the skyline fits the assumed eye's best pose.
      */
     static OrientationEstimate fromRaisedEyes(OrientationEstimate e, Skyline sky, PhotoEdges edges, Reference at0,
                                               RaisedReference raised, OrientationPriors priors, long t0) {
@@ -410,7 +412,7 @@ public final class OrientationEstimator {
         double assumedBest = score(residualsPx(new Hypothesis(p0.headingDeg(), p0.pitchDeg(), p0.rollDeg(), p0.hfovDeg(),
                 Double.NaN), fine, sky.widthPx(), sky.heightPx(), at0.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
         List<Searched> found = new ArrayList<>();
-        for (double metres : RAISED_EYES_METRES) {
+        for (double metres : searchedEyesMetres()) {
             Reference up;
             try {
                 up = raised.at(metres);
@@ -471,6 +473,21 @@ public final class OrientationEstimator {
      * photos alike), then 50 m for larger ones.
      */
     public static final List<Double> RAISED_EYES_METRES = List.of(20.0, 50.0);
+
+    /**
+     * The eyes {@link #fromRaisedEyes} searches from, metres from the one assumed, in turn: each of
+     * {@link #RAISED_EYES_METRES} up, then as far down. Lowered eyes count where the eye assumed stands above the
+     * ground by at least that much (an altitude given, as an EXIF GPS altitude, may be tens of metres too high);
+     * at the ground the renderer refuses them at once ({@link RaisedReference#at}), before anything is drawn.
+     */
+    static List<Double> searchedEyesMetres() {
+        List<Double> eyes = new ArrayList<>();
+        for (double m : RAISED_EYES_METRES) {
+            eyes.add(m);
+            eyes.add(-m);
+        }
+        return eyes;
+    }
 
     /**
      * Smallest offset, metres, for which an unsure estimate is searched again from another eye: at the assumed eye,

@@ -134,6 +134,52 @@ class AltitudeRefinementTest {
         assertTrue(eyes.contains(OrientationEstimator.RAISED_EYES_METRES.get(0)), what);
     }
 
+    @Test
+    void anEyeAssumedFarTooHighIsFoundByASearchFromALoweredEye() {
+        // An altitude given 30 m too high (an EXIF GPS altitude), looking at 85°: from the assumed eye the best pose is
+        // 109° off and the second-best 133° off, nothing is found from the raised eye 20 m up, and the search from 20 m
+        // lower finds the pose, the fit from there the eye.
+        double heading = 85, truth = -30;
+        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        assertTrue(pinned.unsure(), pinned.summary());
+        assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 90, pinned.summary());
+        java.util.List<Double> eyes = new java.util.ArrayList<>();
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+            eyes.add(m);
+            return reference(m, false);
+        }, priors);
+        String what = e.summary() + " (altitude pinned: " + pinned.summary() + "); eyes rendered " + eyes;
+        assertFalse(e.unsure(), what);
+        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
+        assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
+        assertTrue(eyes.contains(-OrientationEstimator.RAISED_EYES_METRES.get(0)), what);
+    }
+
+    @Test
+    void loweredEyesAreRefusedAtTheGroundAndOnlyRaisedOnesSearched() {
+        // The same photo with the eye assumed at the ground (the renderer refuses every lower eye): the lowered eyes
+        // are asked for and refused, nothing else changes, and no answer is made sure by them.
+        double heading = 85, truth = -30;
+        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
+        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
+        OrientationEstimator.Reference at0 = reference(0, false);
+        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        java.util.List<Double> refused = new java.util.ArrayList<>();
+        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+            if (m < 0) {
+                refused.add(m);
+                throw new IllegalArgumentException("the eye would be below the DEM surface");
+            }
+            return reference(m, false);
+        }, priors);
+        assertTrue(refused.containsAll(OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> -m).toList()),
+                "refused " + refused);
+        assertTrue(e.unsure() || OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.5, e.summary());
+    }
+
     /** Far ridges that repeat every 120°: from the assumed eye, three headings fit any photo about equally. */
     static final DoubleUnaryOperator REPEATING_FAR = az -> 1800 + 400 * Math.sin(Math.toRadians(6 * az) + 0.4)
             + 250 * Math.sin(Math.toRadians(21 * az) + 2.1);
@@ -176,16 +222,17 @@ class AltitudeRefinementTest {
 
     @Test
     void aPoseConfidentFromOneRaisedEyeOnlyIsNotKept() {
-        // The same, but from the second raised eye the view is turned by 90°: the eyes disagree, the estimate stays
-        // as it was.
+        // The same, but from every other eye searched the view is turned, each by another angle: no two eyes agree,
+        // the estimate stays as it was.
         Skyline sky = SyntheticSkyline.project(horizon(30), W, H, new CameraOrientation(123.4, 1, 0.5), 50);
         OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
         OrientationEstimator.Reference at0 = reference(REPEATING_FAR, REPEATING_FAR, 0, true);
         OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
         assertTrue(pinned.unsure(), pinned.summary());
-        DoubleUnaryOperator skyline = horizon(30), turned = az -> skyline.applyAsDouble(az + 90);
+        DoubleUnaryOperator skyline = horizon(30);
         OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
-                m -> allFar(m == OrientationEstimator.RAISED_EYES_METRES.get(0) ? skyline : turned), priors);
+                m -> allFar(m == OrientationEstimator.RAISED_EYES_METRES.get(0) ? skyline
+                        : az -> skyline.applyAsDouble(az + 90 + 1.3 * m)), priors);
         assertSame(pinned, e, e.summary());
     }
 
