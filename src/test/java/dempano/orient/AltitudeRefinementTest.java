@@ -59,6 +59,25 @@ class AltitudeRefinementTest {
         return new OrientationEstimator.Reference(new HorizonProfile(el, d, ppd), null);
     }
 
+    /**
+     * A photo's skyline from an eye {@code truth} metres above the assumed one, looking at {@code heading} (pitch 2°,
+     * roll −1.5°, 55° field of view), the reference from the assumed eye, and the estimate made there.
+     */
+    record Photo(Skyline sky, OrientationEstimator.Reference at0, OrientationEstimate pinned) {
+        static final OrientationPriors PRIORS = OrientationPriors.NONE.withAltitudeFree(true);
+
+        static Photo of(double truth, double heading) {
+            Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
+            OrientationEstimator.Reference at0 = reference(0, false);
+            return new Photo(sky, at0, OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, PRIORS));
+        }
+
+        /** The estimate refined with the altitude, the reference from other eyes rendered by {@code raised}. */
+        OrientationEstimate refined(OrientationEstimator.RaisedReference raised) {
+            return OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, raised, PRIORS);
+        }
+    }
+
     @Test
     void anEyeTwentyMetresHigherIsFoundAndThePoseWithIt() {
         double heading = 77.7, pitch = 2, roll = -1.5, hfov = 55, truth = 20;
@@ -91,14 +110,11 @@ class AltitudeRefinementTest {
         // (the best 0.7° off, margin under the threshold); from the eye the best pose proposes, the whole search is
         // made again and is confident.
         double heading = 77.7, truth = 30;
-        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
-        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
-        OrientationEstimator.Reference at0 = reference(0, false);
-        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        Photo photo = Photo.of(truth, heading);
+        OrientationEstimate pinned = photo.pinned();
         assertTrue(pinned.unsure(), pinned.summary());
         assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 0.3, pinned.summary());
-        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0,
-                m -> reference(m, false), priors);
+        OrientationEstimate e = photo.refined(m -> reference(m, false));
         String what = e.summary() + " (altitude pinned: " + pinned.summary() + ")";
         assertFalse(e.unsure(), what);
         assertEquals(truth, e.altitudeOffsetMetres(), 3, what);
@@ -108,54 +124,42 @@ class AltitudeRefinementTest {
                 > OrientationEstimator.DISTINCT_HEADING_DEG, what);
     }
 
-    @Test
-    void anEyeSoFarOffThatNoPoseOfTheAssumedEyeIsNearIsFoundByASearchFromARaisedEye() {
-        // 30 m higher than assumed, looking at 185°: from the assumed eye the best pose is 127° off and the second-best
-        // 7° off, and the fits from them go down, not up, and are not kept; the search made from the raised eyes finds
-        // the pose, the fit from there the eye. (Session 24 had this at 310°, where the best pose was 141° off; since the
-        // altitude's standard error counts errors alike over neighbouring samples, the wrong pose's fit is no longer kept
-        // there, and the second-best's finds the eye before any raised search.)
-        double heading = 185, truth = 30;
-        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
-        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
-        OrientationEstimator.Reference at0 = reference(0, false);
-        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
-        assertTrue(pinned.unsure(), pinned.summary());
-        assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 90, pinned.summary());
-        java.util.List<Double> eyes = new java.util.ArrayList<>();
-        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
-            eyes.add(m);
-            return reference(m, false);
-        }, priors);
-        String what = e.summary() + " (altitude pinned: " + pinned.summary() + "); eyes rendered " + eyes;
-        assertFalse(e.unsure(), what);
-        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
-        assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
-        assertTrue(eyes.contains(OrientationEstimator.RAISED_EYES_METRES.get(0)), what);
-    }
+    /**
+     * Eyes so far off that no pose of the assumed eye is near the truth, found by the last-resort search: {true eye
+     * offset metres, heading degrees, the searched eye that finds it, metres}.
+     * <ul>
+     *   <li>30 m higher than assumed, looking at 185°: from the assumed eye the best pose is 127° off and the second-best
+     *       7° off, and the fits from them go down, not up, and are not kept; the search made from the eye raised 20 m
+     *       finds the pose, the fit from there the eye. (Session 24 had this at 310°, where the best pose was 141° off;
+     *       since the altitude's standard error counts errors alike over neighbouring samples, the wrong pose's fit is
+     *       no longer kept there, and the second-best's finds the eye before any raised search.)</li>
+     *   <li>30 m lower than assumed (an altitude given too high, as an EXIF GPS altitude), looking at 85°: the best pose
+     *       is 109° off, the second-best 133° off, nothing is found from the raised eye 20 m up, and the search from
+     *       20 m lower finds the pose, the fit from there the eye.</li>
+     * </ul>
+     */
+    static final double[][] FAR_OFF_EYES = {{30, 185, 20}, {-30, 85, -20}};
 
     @Test
-    void anEyeAssumedFarTooHighIsFoundByASearchFromALoweredEye() {
-        // An altitude given 30 m too high (an EXIF GPS altitude), looking at 85°: from the assumed eye the best pose is
-        // 109° off and the second-best 133° off, nothing is found from the raised eye 20 m up, and the search from 20 m
-        // lower finds the pose, the fit from there the eye.
-        double heading = 85, truth = -30;
-        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
-        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
-        OrientationEstimator.Reference at0 = reference(0, false);
-        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
-        assertTrue(pinned.unsure(), pinned.summary());
-        assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 90, pinned.summary());
-        java.util.List<Double> eyes = new java.util.ArrayList<>();
-        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
-            eyes.add(m);
-            return reference(m, false);
-        }, priors);
-        String what = e.summary() + " (altitude pinned: " + pinned.summary() + "); eyes rendered " + eyes;
-        assertFalse(e.unsure(), what);
-        assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
-        assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
-        assertTrue(eyes.contains(-OrientationEstimator.RAISED_EYES_METRES.get(0)), what);
+    void anEyeSoFarOffThatNoPoseOfTheAssumedEyeIsNearIsFoundByASearchFromAnotherEye() {
+        for (double[] c : FAR_OFF_EYES) {
+            double truth = c[0], heading = c[1], searched = c[2];
+            Photo photo = Photo.of(truth, heading);
+            OrientationEstimate pinned = photo.pinned();
+            assertTrue(pinned.unsure(), pinned.summary());
+            assertTrue(OrientationEstimator.headingGap(pinned.headingDeg(), heading) > 90, pinned.summary());
+            java.util.List<Double> eyes = new java.util.ArrayList<>();
+            OrientationEstimate e = photo.refined(m -> {
+                eyes.add(m);
+                return reference(m, false);
+            });
+            String what = "eye " + truth + " m off: " + e.summary() + " (altitude pinned: " + pinned.summary()
+                    + "); eyes rendered " + eyes;
+            assertFalse(e.unsure(), what);
+            assertTrue(OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.1, what);
+            assertEquals(truth, e.altitudeOffsetMetres(), 2, what);
+            assertTrue(eyes.contains(searched), what);
+        }
     }
 
     @Test
@@ -163,18 +167,16 @@ class AltitudeRefinementTest {
         // The same photo with the eye assumed at the ground (the renderer refuses every lower eye): the lowered eyes
         // are asked for and refused, nothing else changes, and no answer is made sure by them.
         double heading = 85, truth = -30;
-        Skyline sky = SyntheticSkyline.project(horizon(truth), W, H, new CameraOrientation(heading, 2, -1.5), 55);
-        OrientationPriors priors = OrientationPriors.NONE.withAltitudeFree(true);
-        OrientationEstimator.Reference at0 = reference(0, false);
-        OrientationEstimate pinned = OrientationEstimator.estimate(sky, PhotoEdges.NONE, at0.profile(), null, priors);
+        Photo photo = Photo.of(truth, heading);
+        OrientationEstimate pinned = photo.pinned();
         java.util.List<Double> refused = new java.util.ArrayList<>();
-        OrientationEstimate e = OrientationEstimator.withAltitude(pinned, sky, PhotoEdges.NONE, at0, m -> {
+        OrientationEstimate e = photo.refined(m -> {
             if (m < 0) {
                 refused.add(m);
                 throw new IllegalArgumentException("the eye would be below the DEM surface");
             }
             return reference(m, false);
-        }, priors);
+        });
         assertTrue(refused.containsAll(OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> -m).toList()),
                 "refused " + refused);
         assertTrue(e.unsure() || OrientationEstimator.headingGap(e.headingDeg(), heading) < 0.5, e.summary());
