@@ -291,6 +291,16 @@ public final class PanoramaRenderer implements AutoCloseable {
         return render(request, stage -> { });
     }
 
+    /**
+     * The DEM's surface at the request's coordinate, metres above sea level (bilinear, the surface a viewpoint stands
+     * on), from the tiles a render there loads (kept for it); NaN in a void or on a missing tile.
+     *
+     * @throws IllegalArgumentException as a render there would for missing tiles its policy refuses
+     */
+    public double groundElevationMetres(PanoramaRequest at) {
+        return tiles(at, new Stopwatch()).heightAt(at.latDeg(), at.lonDeg());
+    }
+
     /** The tiles around the request's coordinate, checked as its missing-tile policy says. */
     private Mosaic tiles(PanoramaRequest req, Stopwatch clock) {
         Mosaic mosaic = Mosaic.around(dem, req.latDeg(), req.lonDeg(), req.rangeMetres(), req.missingTiles());

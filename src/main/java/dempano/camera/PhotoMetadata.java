@@ -298,7 +298,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
      */
     public List<String> missing(PhotoOverrides overrides) {
         List<String> missing = new ArrayList<>();
-        build(overrides, missing, new ArrayList<>());
+        build(overrides, missing, new ArrayList<>(), Double.NaN);
         return missing;
     }
 
@@ -325,9 +325,22 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
      *                                out of range
      */
     public PhotoCamera resolve(PhotoOverrides overrides) {
+        return resolve(overrides, Double.NaN);
+    }
+
+    /**
+     * As {@link #resolve(PhotoOverrides)}, knowing the DEM's surface at the photo's position: an EXIF GPSAltitude that
+     * puts the camera more than {@link Viewpoint#BELOW_GROUND_TOLERANCE_METRES} below it is wrong (GPS altitudes are
+     * often tens of metres off), so it is not used and the camera stands on the DEM (offset 0, the default camera
+     * height), with a provenance line saying why. An altitude given by flag is the user's, and is not second-guessed
+     * (a viewpoint below the surface is refused when rendered).
+     *
+     * @param demGroundMetres the DEM surface's height at the photo's position, metres; NaN: not known (no check)
+     */
+    public PhotoCamera resolve(PhotoOverrides overrides, double demGroundMetres) {
         List<String> missing = new ArrayList<>();
         List<String> provenance = new ArrayList<>();
-        PhotoCamera camera = build(overrides, missing, provenance);
+        PhotoCamera camera = build(overrides, missing, provenance, demGroundMetres);
         if (!missing.isEmpty()) {
             throw new PhotoMetadataException(source + ": the photo's camera is not fully known:\n  - "
                     + String.join("\n  - ", missing));
@@ -347,7 +360,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return new java.math.BigDecimal(String.format(Locale.ROOT, "%.9g", v)).stripTrailingZeros().toPlainString();
     }
 
-    private PhotoCamera build(PhotoOverrides o, List<String> missing, List<String> provenance) {
+    private PhotoCamera build(PhotoOverrides o, List<String> missing, List<String> provenance, double demGroundMetres) {
         for (String p : problems) {
             provenance.add("metadata problem: " + p);
         }
@@ -371,6 +384,13 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             offset = o.offsetMetres();
             provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
                     + " (" + PhotoOverrides.OFFSET + ")");
+        } else if (given(gpsAltitudeMetres) && gpsAltitudeMetres + (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0)
+                < demGroundMetres - Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
+            provenance.add("camera altitude " + num(gpsAltitudeMetres) + " m from EXIF GPSAltitude not used: "
+                    + String.format(Locale.ROOT, "%.1f", demGroundMetres - gpsAltitudeMetres
+                    - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0)) + " m below the DEM surface ("
+                    + String.format(Locale.ROOT, "%.1f", demGroundMetres) + " m); standing on the DEM instead ("
+                    + PhotoOverrides.OFFSET + " 0; " + PhotoOverrides.ALTITUDE + " gives an altitude)");
         } else if (given(gpsAltitudeMetres)) {
             altitude = gpsAltitudeMetres;
             defaultHeight = 0;

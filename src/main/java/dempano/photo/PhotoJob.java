@@ -164,7 +164,7 @@ public final class PhotoJob {
                     + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
             o = open.placeholders(meta, o);
         }
-        PhotoCamera camera = resolve(meta, o);
+        PhotoCamera camera = resolve(renderer, in.settings(), meta, o);
         List<String> firstLines = open.relabel(camera.provenance(), given, null);
         for (int i = 0; i < firstLines.size(); i++) {
             if (firstLines.get(i).equals(camera.provenance().get(i))) {
@@ -205,7 +205,7 @@ public final class PhotoJob {
                         ? "widen --heading-range-deg, or check the position" : "give --heading-range-deg (e.g. 20) to search"
                         + " around it, as for a compass"));
             }
-            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()));
+            camera = resolve(renderer, in.settings(), meta, open.apply(given, est.estimate(), camera.pose()));
             List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
             if (!Double.isNaN(headingRangeDeg)) {
                 prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
@@ -272,11 +272,30 @@ public final class PhotoJob {
     }
 
     private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o) {
+        return resolve(meta, o, Double.NaN);
+    }
+
+    private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o, double demGroundMetres) {
         try {
-            return meta.resolve(o);
+            return meta.resolve(o, demGroundMetres);
         } catch (PhotoMetadataException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }
+    }
+
+    /**
+     * The camera, where its altitude would be the EXIF GPSAltitude, checked against the DEM's surface there: a GPS
+     * altitude below it is not used and the camera stands on the DEM ({@link PhotoMetadata#resolve(PhotoOverrides,
+     * double)}; the tiles read are the ones the render loads).
+     */
+    private static PhotoCamera resolve(PanoramaRenderer renderer, PanoramaRequest settings, PhotoMetadata meta,
+                                       PhotoOverrides o) {
+        PhotoCamera camera = resolve(meta, o);
+        if (Double.isNaN(o.altitudeMetres()) && Double.isNaN(o.offsetMetres()) && !Double.isNaN(meta.gpsAltitudeMetres())) {
+            double ground = renderer.groundElevationMetres(atCamera(settings, camera.pose().latDeg(), camera.pose().lonDeg()));
+            camera = resolve(meta, o, ground);
+        }
+        return camera;
     }
 
     /**

@@ -193,6 +193,45 @@ class PhotoMetadataTest {
     }
 
     @Test
+    void aGpsAltitudeBelowTheDemSurfaceIsNotUsed(@TempDir Path dir) throws Exception {
+        // The phone's GPS altitude is 1234.56 m (the camera's own, height 0). Rows: DEM surface there, camera height
+        // given (NaN: none), altitude flag, whether the camera then stands on the DEM.
+        PhotoMetadata m = PhotoMetadata.read(phone().write(dir, "phone.jpg", 400, 300));
+        double tolerance = dempano.geo.Viewpoint.BELOW_GROUND_TOLERANCE_METRES;
+        Object[][] cases = {
+            {Double.NaN, Double.NaN, Double.NaN, false},            // the surface not known: no check
+            {1200.0, Double.NaN, Double.NaN, false},                // 34.56 m above the surface
+            {1234.56 + tolerance, Double.NaN, Double.NaN, false},   // just within the tolerance
+            {1234.56 + tolerance + 0.01, Double.NaN, Double.NaN, true},
+            {1262.0, Double.NaN, Double.NaN, true},                 // 27.44 m below: GPS altitudes err that much
+            {1262.0, 30.0, Double.NaN, false},                      // a camera 30 m up (a mast, a building) is above it
+            {1262.0, Double.NaN, 1000.0, false},                    // --altitude-m is the user's: not second-guessed
+        };
+        for (Object[] c : cases) {
+            double ground = (Double) c[0], height = (Double) c[1], flag = (Double) c[2];
+            PhotoOverrides o = level();
+            o = Double.isNaN(height) ? o : o.withCameraHeightMetres(height);
+            o = Double.isNaN(flag) ? o : o.withAltitudeMetres(flag);
+            PhotoCamera cam = m.resolve(o, ground);
+            String what = java.util.Arrays.toString(c) + ": " + cam.pose() + " " + cam.provenance();
+            if ((Boolean) c[3]) {
+                assertFalse(cam.pose().absoluteAltitude(), what);
+                assertEquals(0, cam.pose().offsetMetres(), what);
+                assertEquals(dempano.geo.Viewpoint.DEFAULT_EYE_HEIGHT_METRES, cam.pose().cameraHeightMetres(), what);
+                assertTrue(cam.provenance().stream().anyMatch(l -> l.startsWith("camera altitude 1234.56 m from EXIF"
+                        + " GPSAltitude not used: ") && l.contains(" m below the DEM surface (") && l.contains("--offset-m 0")),
+                        what);
+            } else {
+                assertTrue(cam.pose().absoluteAltitude(), what);
+                assertEquals(Double.isNaN(flag) ? 1234.56 : flag, cam.pose().altitudeMetres(), 1e-9, what);
+            }
+        }
+        String line = m.resolve(level(), 1262.0).provenance().stream().filter(l -> l.contains("not used")).findFirst()
+                .orElseThrow();
+        assertTrue(line.contains("27.4 m below the DEM surface (1262.0 m)"), line);
+    }
+
+    @Test
     void flagsOverrideTheExif(@TempDir Path dir) throws Exception {
         PhotoMetadata m = PhotoMetadata.read(phone().write(dir, "phone.jpg", 400, 300));
         PhotoCamera cam = m.resolve(level().withPosition(45, 7).withHeadingDeg(200).withFocal35mmMm(52)
