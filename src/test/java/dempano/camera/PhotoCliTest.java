@@ -106,6 +106,30 @@ class PhotoCliTest {
     }
 
     @Test
+    void aGpsAltitudeBelowTheTerrainIsLeftOutAndTheCameraStandsOnTheDem() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        // The drone photo's camera, but its GPS altitude 100 m, below the 400–1000 m hills: it was an error ("the eye
+        // would be … below the DEM surface").
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).altitude(0, 10_000).direction("T", 9000)
+                .focal35(35).xmp("drone-dji:GimbalYawDegree=\"+90.0\" drone-dji:GimbalPitchDegree=\"-8.0\""
+                        + " drone-dji:GimbalRollDegree=\"+0.0\"")
+                .write(tmp, "low.jpg", 160, 120);
+        String prefix = tmp.resolve("low").toString();
+        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20");
+        assertEquals(0, r.exit(), r.err());
+        checkOutputs(prefix, 160, 120);
+        assertTrue(r.err().contains("camera altitude 100 m from EXIF GPSAltitude not used: "), r.err());
+        com.google.gson.JsonObject json = com.google.gson.JsonParser.parseString(Files.readString(Path.of(prefix + ".json")))
+                .getAsJsonObject();
+        com.google.gson.JsonObject eye = json.getAsJsonObject("eye"), pose = json.getAsJsonObject("pose");
+        assertEquals(0, pose.get("offsetMetres").getAsDouble(), json.toString());
+        assertEquals(eye.get("groundElevationMetres").getAsDouble() + dempano.geo.Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
+                eye.get("eyeAltitudeMetres").getAsDouble(), 1e-6, json.toString());
+        assertTrue(eye.get("groundElevationMetres").getAsDouble() > 400, json.toString());
+    }
+
+    @Test
     void flagsAloneGiveASyntheticCamera() throws IOException {
         Path dem = Files.createDirectories(tmp.resolve("dem"));
         tile(dem, 46, 8);
