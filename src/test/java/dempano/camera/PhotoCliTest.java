@@ -89,37 +89,39 @@ class PhotoCliTest {
         assertTrue(json.contains("\"conventions\"") && json.contains("N46E008"), json);
     }
 
-    @Test
-    void aJpegsExifAndXmpAloneGiveTheCamera() throws IOException {
+    /**
+     * {@code dempano photo} on a drone's JPEG over the hills of {@link #tile}: at 46.5° N 8.5° E, GPS altitude
+     * {@code altitudeCentimetres}, facing east (GPS true), DJI gimbal pitch and roll; 160 × 120 px, 20 km range. It must
+     * succeed with every output in place; returns its stderr.
+     */
+    private String droneRun(long altitudeCentimetres, String prefix) throws IOException {
         Path dem = Files.createDirectories(tmp.resolve("dem"));
         tile(dem, 46, 8);
-        // 2000 m above sea level over 400–1000 m hills, facing east (GPS true), DJI gimbal pitch and roll.
-        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).altitude(0, 200_000).direction("T", 9000)
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).altitude(0, altitudeCentimetres).direction("T", 9000)
                 .focal35(35).xmp("drone-dji:GimbalYawDegree=\"+90.0\" drone-dji:GimbalPitchDegree=\"-8.0\""
                         + " drone-dji:GimbalRollDegree=\"+0.0\"")
-                .write(tmp, "drone.jpg", 160, 120);
-        String prefix = tmp.resolve("exif").toString();
-        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20");
+                .write(tmp, prefix + ".jpg", 160, 120);
+        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve(prefix).toString(),
+                "--range-km", "20");
         assertEquals(0, r.exit(), r.err());
-        checkOutputs(prefix, 160, 120);
-        assertTrue(r.err().contains("35"), r.err()); // the provenance names the 35 mm-equivalent focal length
+        checkOutputs(tmp.resolve(prefix).toString(), 160, 120);
+        return r.err();
+    }
+
+    @Test
+    void aJpegsExifAndXmpAloneGiveTheCamera() throws IOException {
+        // 2000 m above sea level over 400–1000 m hills.
+        String err = droneRun(200_000, "exif");
+        assertTrue(err.contains("35"), err); // the provenance names the 35 mm-equivalent focal length
     }
 
     @Test
     void aGpsAltitudeBelowTheTerrainIsLeftOutAndTheCameraStandsOnTheDem() throws IOException {
-        Path dem = Files.createDirectories(tmp.resolve("dem"));
-        tile(dem, 46, 8);
         // The drone photo's camera, but its GPS altitude 100 m, below the 400–1000 m hills: it was an error ("the eye
         // would be … below the DEM surface").
-        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).altitude(0, 10_000).direction("T", 9000)
-                .focal35(35).xmp("drone-dji:GimbalYawDegree=\"+90.0\" drone-dji:GimbalPitchDegree=\"-8.0\""
-                        + " drone-dji:GimbalRollDegree=\"+0.0\"")
-                .write(tmp, "low.jpg", 160, 120);
+        String err = droneRun(10_000, "low");
         String prefix = tmp.resolve("low").toString();
-        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20");
-        assertEquals(0, r.exit(), r.err());
-        checkOutputs(prefix, 160, 120);
-        assertTrue(r.err().contains("camera altitude 100 m from EXIF GPSAltitude not used: "), r.err());
+        assertTrue(err.contains("camera altitude 100 m from EXIF GPSAltitude not used: "), err);
         com.google.gson.JsonObject json = com.google.gson.JsonParser.parseString(Files.readString(Path.of(prefix + ".json")))
                 .getAsJsonObject();
         com.google.gson.JsonObject eye = json.getAsJsonObject("eye"), pose = json.getAsJsonObject("pose");
