@@ -66,7 +66,7 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
             throw new IllegalArgumentException("offset must be a finite number of metres, got " + offsetMetres);
         }
         if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
-            throw new IllegalArgumentException("altitude must be a finite number of metres, got " + altitudeMetres);
+            throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), got " + altitudeMetres);
         }
         if (!(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
             throw new IllegalArgumentException("eye height must be ≥ 0 metres, got " + eyeHeightMetres);

@@ -25,10 +25,10 @@ public record CameraPose(double latDeg, double lonDeg, double offsetMetres, doub
     public CameraPose {
         TileSelection.checkCoordinates(latDeg, lonDeg);
         if (!Double.isFinite(offsetMetres) || Math.abs(offsetMetres) > 1e6) {
-            throw new IllegalArgumentException("offset must be a finite number of metres, got " + offsetMetres);
+            throw new IllegalArgumentException("offset must be a finite number of metres within ±1e6, got " + offsetMetres);
         }
         if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
-            throw new IllegalArgumentException("altitude must be a finite number of metres or NaN (from the DEM), got "
+            throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), or NaN (from the DEM), got "
                     + altitudeMetres);
         }
         if (!(cameraHeightMetres >= 0 && cameraHeightMetres < 1e6)) {

@@ -55,7 +55,7 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
                                        double eyeHeightMetres) {
         TileSelection.checkCoordinates(latDeg, lonDeg);
         if (!Double.isFinite(altitudeMetres) || Math.abs(altitudeMetres) > 1e6) {
-            throw new IllegalArgumentException("altitude must be a finite number of metres, got " + altitudeMetres);
+            throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), got " + altitudeMetres);
         }
         return new Viewpoint(latDeg, lonDeg, groundAt(mosaic, latDeg, lonDeg), Double.NaN, altitudeMetres,
                 eyeHeightMetres);
