@@ -69,11 +69,33 @@ public final class PhotoCommand implements Callable<Integer> {
     RenderOptions render = new RenderOptions();
     @Option(names = "--heading-range-deg", paramLabel = "DEG", description = "Estimate the heading within ± DEG of the one given (flag or EXIF compass) instead of taking it as is.")
     Double headingRangeDeg;
+    @Option(names = "--hfov-range-deg", paramLabel = "MIN,MAX", split = ",", description = "Estimate the horizontal field of view within MIN..MAX degrees (when neither flags nor EXIF give it).")
+    double[] hfovRangeDeg;
+    @Option(names = "--focal35-range-mm", paramLabel = "MIN,MAX", split = ",", description = "Estimate the field of view for a 35 mm-equivalent focal length within MIN..MAX mm (a zoom lens; when neither flags nor EXIF give it).")
+    double[] focal35RangeMm;
     @Option(names = "--summits", paramLabel = "FILE", description = "Summit list (as for panoramas): P-summits.json/csv and labels.")
     Path summitsFile;
 
     /** Where relative paths lead and the renderer comes from (the resident process sets the client's). */
     RunContext context = RunContext.HERE;
+
+    /** The search ranges from the flags; a range is two numbers. */
+    dempano.orient.SearchRanges ranges() {
+        double[] fov = pair(hfovRangeDeg, "--hfov-range-deg"), focal = pair(focal35RangeMm, "--focal35-range-mm");
+        return new dempano.orient.SearchRanges(headingRangeDeg == null ? Double.NaN : headingRangeDeg, fov[0], fov[1],
+                focal[0], focal[1]);
+    }
+
+    private static double[] pair(double[] v, String flag) {
+        if (v == null) {
+            return new double[] {Double.NaN, Double.NaN};
+        }
+        if (v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
+            throw new IllegalArgumentException(flag + " must be MIN,MAX (two finite numbers), got "
+                    + java.util.Arrays.toString(v));
+        }
+        return v;
+    }
 
     @Override
     public Integer call() throws Exception {
@@ -100,8 +122,7 @@ public final class PhotoCommand implements Callable<Integer> {
             java.nio.file.Files.createDirectories(outParent);
         }
         SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
-        PhotoJob.Input input = new PhotoJob.Input(image, overrides, widthPx, heightPx,
-                headingRangeDeg == null ? Double.NaN : headingRangeDeg, settings, summits, out);
+        PhotoJob.Input input = new PhotoJob.Input(image, overrides, widthPx, heightPx, ranges(), settings, summits, out);
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(demDirs, fill, w -> System.err.println("  warning: " + w));
         PhotoJob.Result done;
         // Meshes kept through the job (as with --repeat): the orientation's panoramas and the photo's view share them.

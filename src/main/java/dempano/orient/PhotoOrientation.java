@@ -147,12 +147,14 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
      * and {@linkplain #match matches} the photo against it.
      *
      * @param camera the camera as resolved so far: what is not open is taken from it (its heading is the centre of
-     *               the prior when {@code headingRangeDeg} is given), and its lens (principal point, pixel aspect,
+     *               the prior when a heading range is given), and its lens (principal point, pixel aspect,
      *               distortion) is matched with; its field of view counts as that of the undistorted image,
      *               (w / 2) / tan(hfov / 2) = fx, as {@code --hfov-deg} does
+     * @param ranges the heading range around the camera's heading (NaN: the heading searched all round where open),
+     *               and the field-of-view range searched where the field of view is open (none: 15°–100°)
      */
     public Result estimate(PanoramaRenderer renderer, PanoramaRequest settings, BufferedImage photo,
-                           dempano.camera.PhotoCamera camera, double headingRangeDeg) {
+                           dempano.camera.PhotoCamera camera, SearchRanges ranges) {
         PanoramaRequest base = settings.withPixelsPerDegree(PANORAMA_PPD)
                 .withElevationRange(new ElevationRange(-30, 45, false)).withColour(false).withExactDistances(false);
         dempano.camera.CameraPose pose = camera.pose();
@@ -165,14 +167,17 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
                 .withAltitudeFree(altitude);
         if (!heading) {
             priors = priors.withHeading(k.headingDeg(), 0);
-        } else if (!Double.isNaN(headingRangeDeg)) {
-            priors = priors.withHeading(k.headingDeg(), headingRangeDeg);
+        } else if (!Double.isNaN(ranges.headingRangeDeg())) {
+            priors = priors.withHeading(k.headingDeg(), ranges.headingRangeDeg());
         }
         priors = pitch ? priors : priors.withPitchDeg(k.pitchDeg());
         priors = roll ? priors : priors.withRollDeg(k.rollDeg());
         if (!hfov) {
             double fov = Math.toDegrees(2 * Math.atan(lens.widthPx() / 2.0 / lens.fxPx()));
             priors = priors.withHfovRangeDeg(fov, fov);
+        } else if (ranges.hasFovRange()) {
+            double[] fov = ranges.hfovRangeDeg(lens.widthPx(), lens.heightPx());
+            priors = priors.withHfovRangeDeg(fov[0], fov[1]);
         }
         return match(photo, reference(renderer.render(base)), raised, priors);
     }

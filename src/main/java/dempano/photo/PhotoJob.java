@@ -9,6 +9,7 @@ import dempano.camera.PhotoCamera;
 import dempano.camera.PhotoMetadata;
 import dempano.camera.PhotoMetadataException;
 import dempano.camera.PhotoOverrides;
+import dempano.orient.SearchRanges;
 import dempano.io.CameraWriter;
 import dempano.io.OutputSet;
 import dempano.orient.OrientationEstimate;
@@ -54,27 +55,31 @@ public final class PhotoJob {
      * @param overrides       values that replace (or stand in for) the photo's metadata
      * @param widthPx         without an image: the image width, pixels; null with one (its own size is used)
      * @param heightPx        without an image: the image height, pixels; null with one
-     * @param headingRangeDeg estimate the heading within ± this many degrees of the one given (override or
-     *                        compass), degrees; NaN = take a given heading as it is
+     * @param ranges          where the estimate searches: the heading within ± some degrees of the one given (override
+     *                        or compass; none: a given heading taken as it is), the field of view within a range
+     *                        (or a zoom lens's focal lengths) where it is open; null = {@link SearchRanges#NONE}
      * @param settings        range, refraction, supersampling, exact distances, layers, ... for the render; its
      *                        viewpoint, offset, altitude and eye height are replaced by the camera's pose
      * @param summits         the summit list for {@code P-summits.json/csv} and overlay labels; null = none
      * @param outPrefix       the output prefix P (its folder must exist)
      */
-    public record Input(Path image, PhotoOverrides overrides, Integer widthPx, Integer heightPx, double headingRangeDeg,
+    public record Input(Path image, PhotoOverrides overrides, Integer widthPx, Integer heightPx, SearchRanges ranges,
                         PanoramaRequest settings, SummitList summits, String outPrefix) {
         public Input {
             Objects.requireNonNull(overrides, "overrides");
             Objects.requireNonNull(settings, "settings");
             Objects.requireNonNull(outPrefix, "outPrefix");
-            if (!Double.isNaN(headingRangeDeg) && !(headingRangeDeg > 0 && headingRangeDeg <= 180)) {
-                throw new IllegalArgumentException("--heading-range-deg must be in (0°, 180°], got " + headingRangeDeg);
-            }
+            ranges = ranges == null ? SearchRanges.NONE : ranges;
+        }
+
+        /** The heading range, degrees; NaN: none. */
+        public double headingRangeDeg() {
+            return ranges.headingRangeDeg();
         }
 
         /** A photo with its metadata and no overrides, heading as given, no summits. */
         public static Input of(Path image, PanoramaRequest settings, String outPrefix) {
-            return new Input(Objects.requireNonNull(image, "image"), PhotoOverrides.NONE, null, null, Double.NaN,
+            return new Input(Objects.requireNonNull(image, "image"), PhotoOverrides.NONE, null, null, SearchRanges.NONE,
                     settings, null, outPrefix);
         }
     }
@@ -174,6 +179,11 @@ public final class PhotoJob {
         PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
         BufferedImage orientationOverlay = null;
         String orientationJson = null;
+        if (in.ranges().hasFovRange() && !open.hfov()) {
+            log.progress("the field-of-view range " + in.ranges().describeFov(camera.intrinsics().widthPx(),
+                    camera.intrinsics().heightPx()) + " not used: the field of view is "
+                    + (photo == null ? "given" : "known (flag or metadata)") + ", not estimated");
+        }
         if (open.any()) {
             PhotoOrientation.Result est;
             // The range is a prior only around a heading that was given (override or metadata).
@@ -187,7 +197,7 @@ public final class PhotoJob {
                 est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
                                 .withAltitudeMetres(camera.pose().altitudeMetres())
                                 .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                        photo, camera, headingRangeDeg);
+                        photo, camera, in.ranges().withHeadingRangeDeg(headingRangeDeg));
             } catch (IllegalArgumentException e) {
                 List<String> missing = meta.missing(given);
                 throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
@@ -211,6 +221,10 @@ public final class PhotoJob {
                 prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
                         PhotoMetadata.num(headingRangeDeg), PhotoMetadata.num(priorHeadingDeg), Double.isNaN(given.headingDeg())
                                 ? "the photo's metadata" : PhotoOverrides.HEADING));
+            }
+            if (open.hfov() && in.ranges().hasFovRange()) {
+                prov.add("field of view searched within " + in.ranges().describeFov(camera.intrinsics().widthPx(),
+                        camera.intrinsics().heightPx()));
             }
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);

@@ -58,7 +58,7 @@ class BatchPhotoRowsTest {
             // 35 mm equivalent), saved as a JPEG whose EXIF/XMP says where and how it was taken.
             PhotoOverrides pose = PhotoOverrides.NONE.withPosition(46.5, 8.5).withAltitudeMetres(1500).withHeadingDeg(120)
                     .withPitchDeg(-5).withRollDeg(0).withFocal35mmMm(35).withCameraHeightMetres(0); // GPS altitude is the camera's
-            PhotoJob.Result truth = PhotoJob.run(r, new PhotoJob.Input(null, pose, 240, 160, Double.NaN, defaults, null,
+            PhotoJob.Result truth = PhotoJob.run(r, new PhotoJob.Input(null, pose, 240, 160, dempano.orient.SearchRanges.NONE, defaults, null,
                     tmp.resolve("truth").toString()), PhotoJob.Log.NONE);
             Path photos = Files.createDirectories(tmp.resolve("photos"));
             java.awt.image.BufferedImage view = ImageIO.read(tmp.resolve("truth.png").toFile());

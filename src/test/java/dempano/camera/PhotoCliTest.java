@@ -132,6 +132,34 @@ class PhotoCliTest {
     }
 
     @Test
+    void aFieldOfViewRangeBoundsTheEstimateAndIsSaidWhereItIsNotUsed() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        // A "photo" of the hills rendered from flags (50° field of view), then matched with the field of view open but
+        // bounded to 45–48°: the estimate stays within the bound (3 % beyond it is the flag's own margin), and says so.
+        String truth = tmp.resolve("truth").toString();
+        Run t = run("photo", "--dem-dir", dem.toString(), "--out", truth, "--range-km", "20", "--lat", "46.5", "--lon",
+                "8.5", "--offset-m", "0", "--heading-deg", "200", "--pitch-deg", "-2", "--roll-deg", "0", "--hfov-deg", "50",
+                "--width-px", "240", "--height-px", "160");
+        assertEquals(0, t.exit(), t.err());
+        String prefix = tmp.resolve("ranged").toString();
+        Run r = run("photo", truth + ".png", "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20", "--lat",
+                "46.5", "--lon", "8.5", "--offset-m", "0", "--hfov-range-deg", "45,48");
+        assertEquals(0, r.exit(), r.err());
+        double hfov = com.google.gson.JsonParser.parseString(Files.readString(Path.of(prefix + "-orientation.json")))
+                .getAsJsonObject().get("hfovDeg").getAsDouble();
+        assertTrue(hfov >= 45 * 0.97 - 1e-9 && hfov <= 48 * 1.03 + 1e-9, "hfov " + hfov + "\n" + r.err());
+        assertTrue(Files.readString(Path.of(prefix + ".json")).contains("field of view searched within 45.0°–48.0°"
+                + " (--hfov-range-deg)"), Files.readString(Path.of(prefix + ".json")));
+        // With the field of view given, the range is not used, and said so.
+        Run given = run("photo", truth + ".png", "--dem-dir", dem.toString(), "--out", tmp.resolve("given").toString(),
+                "--range-km", "20", "--lat", "46.5", "--lon", "8.5", "--offset-m", "0", "--hfov-deg", "50",
+                "--focal35-range-mm", "24,70");
+        assertEquals(0, given.exit(), given.err());
+        assertTrue(given.err().contains("not used: the field of view is known"), given.err());
+    }
+
+    @Test
     void flagsAloneGiveASyntheticCamera() throws IOException {
         Path dem = Files.createDirectories(tmp.resolve("dem"));
         tile(dem, 46, 8);
@@ -173,6 +201,10 @@ class PhotoCliTest {
             {"--altitude-m", "Infinity", "--altitude-m must be a finite number"},
             {"--focal35-mm", "-5", "35 mm-equivalent focal length must be positive"},
             {"--heading-range-deg", "-3", "--heading-range-deg must be in"},
+            {"--hfov-range-deg", "60,40", "--hfov-range-deg must be MIN,MAX with 0 < MIN ≤ MAX < 180"},
+            {"--hfov-range-deg", "40", "--hfov-range-deg must be MIN,MAX (two finite numbers)"},
+            {"--hfov-range-deg", "40,NaN", "--hfov-range-deg must be MIN,MAX (two finite numbers)"},
+            {"--focal35-range-mm", "0,70", "--focal35-range-mm must be MIN,MAX with 0 < MIN"},
         };
         for (String[] c : cases) {
             Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("y").toString(), c[0], c[1]);

@@ -61,12 +61,13 @@ class PhotoJobReadTest {
         dempano.PanoramaRequest settings = dempano.PanoramaRequest.at(46.43, 8.09);
         for (double bad : new double[] {-3, 0, 180.5, Double.POSITIVE_INFINITY}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new PhotoJob.Input(
-                    tmp.resolve("absent.jpg"), dempano.camera.PhotoOverrides.NONE, null, null, bad, settings, null, "x"));
+                    tmp.resolve("absent.jpg"), dempano.camera.PhotoOverrides.NONE, null, null,
+                    dempano.orient.SearchRanges.NONE.withHeadingRangeDeg(bad), settings, null, "x"));
             assertTrue(e.getMessage().contains("--heading-range-deg"), e.getMessage());
         }
         for (double ok : new double[] {Double.NaN, 0.5, 180}) {
             assertEquals(ok, new PhotoJob.Input(tmp.resolve("absent.jpg"), dempano.camera.PhotoOverrides.NONE, null, null,
-                    ok, settings, null, "x").headingRangeDeg(), 0);
+                    dempano.orient.SearchRanges.NONE.withHeadingRangeDeg(ok), settings, null, "x").headingRangeDeg(), 0);
         }
     }
 }
