@@ -1,6 +1,7 @@
 package dempano.batch;
 
 import dempano.camera.PhotoOverrides;
+import dempano.orient.SearchRanges;
 import java.nio.file.Path;
 import java.util.Objects;
 
@@ -11,10 +12,12 @@ import java.util.Objects;
  *
  * @param image     the photograph (JPEG, PNG, ...)
  * @param overrides position, altitude, heading, pitch, roll, field of view or focal length from the row
+ * @param ranges    where the estimate searches, from the row ({@link SearchRanges#NONE}: nothing given)
  */
-public record BatchPhoto(Path image, PhotoOverrides overrides) {
+public record BatchPhoto(Path image, PhotoOverrides overrides, SearchRanges ranges) {
     public BatchPhoto {
         Objects.requireNonNull(image, "image");
         Objects.requireNonNull(overrides, "overrides");
+        ranges = ranges == null ? SearchRanges.NONE : ranges;
     }
 }

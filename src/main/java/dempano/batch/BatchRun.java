@@ -248,7 +248,7 @@ public final class BatchRun {
     /** Orients and renders a photo row and puts its files in place (see {@link PhotoJob}). */
     private List<Path> renderPhoto(BatchRow row) throws IOException {
         BatchPhoto photo = row.photo();
-        return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, dempano.orient.SearchRanges.NONE,
+        return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, photo.ranges(),
                 row.request(), null, outDir.resolve(row.id()).toString()), PhotoJob.Log.NONE).files();
     }
 

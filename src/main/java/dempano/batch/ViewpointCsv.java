@@ -3,6 +3,7 @@ package dempano.batch;
 import dempano.PanoramaRequest;
 import dempano.camera.PhotoOverrides;
 import dempano.io.IoMessages;
+import dempano.orient.SearchRanges;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.CharacterCodingException;
@@ -40,7 +41,9 @@ import org.apache.commons.csv.CSVRecord;
  *       {@code lat}, {@code lon} (both or neither), {@code altitude_m}, {@code offset_m}, {@code eye_height_m} and
  *       the photo columns override it: {@code heading_deg} (true, clockwise from north), {@code pitch_deg} (up
  *       positive), {@code roll_deg} (clockwise positive), {@code hfov_deg} or {@code focal35_mm}. What neither
- *       gives, the row's error names. {@code ppd} is for panoramas. With an {@code image} column, {@code lat} and
+ *       gives, the row's error names. Where the estimate searches: {@code heading_range_deg} (± around a heading
+ *       given), {@code hfov_min_deg} with {@code hfov_max_deg}, or {@code focal35_min_mm} with
+ *       {@code focal35_max_mm} (a zoom lens), as {@code dempano photo}'s range flags. {@code ppd} is for panoramas. With an {@code image} column, {@code lat} and
  *       {@code lon} may be left out of the header; a row with an empty image cell is a viewpoint</li>
  * </ul>
  *
@@ -60,11 +63,20 @@ public final class ViewpointCsv {
     /** Photo rows: the photograph, and its camera's values where the photo's metadata lacks them or is wrong. */
     public static final String IMAGE = "image", HEADING_DEG = "heading_deg", PITCH_DEG = "pitch_deg", ROLL_DEG = "roll_deg",
             HFOV_DEG = "hfov_deg", FOCAL35_MM = "focal35_mm";
+    /**
+     * Photo rows: where the estimate searches ({@link SearchRanges}, as {@code dempano photo}'s
+     * {@code --heading-range-deg}, {@code --hfov-range-deg}, {@code --focal35-range-mm}); a range's two ends in two
+     * columns.
+     */
+    public static final String HEADING_RANGE_DEG = "heading_range_deg", HFOV_MIN_DEG = "hfov_min_deg",
+            HFOV_MAX_DEG = "hfov_max_deg", FOCAL35_MIN_MM = "focal35_min_mm", FOCAL35_MAX_MM = "focal35_max_mm";
     /** The columns that only a photo row (one with an image) may fill. */
-    public static final List<String> PHOTO_COLUMNS = List.of(HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM);
+    public static final List<String> PHOTO_COLUMNS = List.of(HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM,
+            HEADING_RANGE_DEG, HFOV_MIN_DEG, HFOV_MAX_DEG, FOCAL35_MIN_MM, FOCAL35_MAX_MM);
     /** The columns read, required first. */
     public static final List<String> COLUMNS = List.of(ID, LAT, LON, ALTITUDE_M, OFFSET_M, EYE_HEIGHT_M, RANGE_KM, PPD,
-            IMAGE, HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM);
+            IMAGE, HEADING_DEG, PITCH_DEG, ROLL_DEG, HFOV_DEG, FOCAL35_MM, HEADING_RANGE_DEG, HFOV_MIN_DEG, HFOV_MAX_DEG,
+            FOCAL35_MIN_MM, FOCAL35_MAX_MM);
 
     /** A photo row's optional column: what it is called in messages, and the override it makes. */
     private record PhotoColumn(String column, String what,
@@ -183,7 +195,8 @@ public final class ViewpointCsv {
                 }
                 BatchRow row = row(line, f, headerFields, columns, defaults, firstLineOfId);
                 rows.add(row.photo() == null || baseDir == null ? row : new BatchRow(row.lineNumber(), row.id(),
-                        row.request(), new BatchPhoto(baseDir.resolve(row.photo().image()), row.photo().overrides()), null));
+                        row.request(), new BatchPhoto(baseDir.resolve(row.photo().image()), row.photo().overrides(),
+                        row.photo().ranges()), null));
             }
         } catch (ViewpointCsvException e) {
             throw e;
@@ -288,7 +301,19 @@ public final class ViewpointCsv {
                 o = c.override().apply(o, v);
             }
         }
-        return new BatchRow(line, id, withRange(r, f, columns), new BatchPhoto(path, o), null);
+        double headingRange = number(f, columns, HEADING_RANGE_DEG, "heading range", Double.NaN),
+                hfovMin = number(f, columns, HFOV_MIN_DEG, "smallest field of view", Double.NaN),
+                hfovMax = number(f, columns, HFOV_MAX_DEG, "largest field of view", Double.NaN),
+                focalMin = number(f, columns, FOCAL35_MIN_MM, "shortest focal length", Double.NaN),
+                focalMax = number(f, columns, FOCAL35_MAX_MM, "longest focal length", Double.NaN);
+        SearchRanges ranges;
+        try {
+            ranges = new SearchRanges(headingRange, hfovMin, hfovMax, focalMin, focalMax);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("search ranges (" + HEADING_RANGE_DEG + ", " + HFOV_MIN_DEG + "/" + HFOV_MAX_DEG
+                    + ", " + FOCAL35_MIN_MM + "/" + FOCAL35_MAX_MM + ", as dempano photo's flags): " + e.getMessage());
+        }
+        return new BatchRow(line, id, withRange(r, f, columns), new BatchPhoto(path, o, ranges), null);
     }
 
     private static PanoramaRequest withRange(PanoramaRequest r, List<String> f, Map<String, Integer> columns) {

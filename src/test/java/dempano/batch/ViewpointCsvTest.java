@@ -79,6 +79,40 @@ class ViewpointCsvTest {
     }
 
     @Test
+    void aPhotoRowsSearchRangesAreReadAndABadOneIsThatRowsError() throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,image,heading_deg,heading_range_deg,hfov_min_deg,hfov_max_deg,focal35_min_mm,"
+                + "focal35_max_mm\n"
+                + "compass,a.jpg,120,20,,,,\n"
+                + "zoom,b.jpg,,,,,24,70\n"
+                + "fov,c.jpg,,,40,60,,\n"
+                + "none,d.jpg,,,,,,\n"
+                + "half,e.jpg,,,40,,,\n"
+                + "both,f.jpg,,,40,60,24,70\n"
+                + "wide,g.jpg,,181,,,,\n").rows();
+        assertEquals(20, rows.get(0).photo().ranges().headingRangeDeg());
+        assertEquals(120, rows.get(0).photo().overrides().headingDeg());
+        double[] zoom = rows.get(1).photo().ranges().hfovRangeDeg(6000, 4000);
+        assertEquals(Math.toDegrees(2 * Math.atan(18 / 70.0)), zoom[0], 1e-9);
+        assertEquals(Math.toDegrees(2 * Math.atan(18 / 24.0)), zoom[1], 1e-9);
+        assertEquals(40, rows.get(2).photo().ranges().hfovMinDeg());
+        assertEquals(60, rows.get(2).photo().ranges().hfovMaxDeg());
+        assertEquals(dempano.orient.SearchRanges.NONE, rows.get(3).photo().ranges());
+        for (int i = 4; i < 7; i++) {
+            BatchRow r = rows.get(i);
+            assertFalse(r.valid(), r.id());
+            assertTrue(r.error().startsWith("line " + (i + 2) + ": search ranges (heading_range_deg, hfov_min_deg/hfov_max_deg,"),
+                    r.error());
+        }
+        assertTrue(rows.get(4).error().contains("--hfov-range-deg must be MIN,MAX"), rows.get(4).error());
+        assertTrue(rows.get(5).error().contains("not both"), rows.get(5).error());
+        assertTrue(rows.get(6).error().contains("--heading-range-deg must be in"), rows.get(6).error());
+        // A viewpoint (no image) may not fill them.
+        BatchRow panorama = parse("id,lat,lon,image,hfov_min_deg,hfov_max_deg\np,46,8,,40,60\n").rows().get(0);
+        assertFalse(panorama.valid());
+        assertTrue(panorama.error().contains("hfov_min_deg is for photo rows"), panorama.error());
+    }
+
+    @Test
     void optionalColumnsOverrideTheDefaultsAndEmptyCellsKeepThem() throws ViewpointCsvException {
         List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd\n"
                 + "full,46.5,8.25,3000,-2,10,20,4\n"

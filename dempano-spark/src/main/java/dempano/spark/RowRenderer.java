@@ -136,7 +136,7 @@ final class RowRenderer {
             throw new IOException("cannot read the image " + imageCell.strip() + ": " + e.getMessage(), e);
         }
         return new BatchRow(row.lineNumber(), row.id(), row.request(),
-                new dempano.batch.BatchPhoto(local, row.photo().overrides()), null);
+                new dempano.batch.BatchPhoto(local, row.photo().overrides(), row.photo().ranges()), null);
     }
 
     private void copy(List<Path> files) throws IOException {
