@@ -360,6 +360,11 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return new java.math.BigDecimal(String.format(Locale.ROOT, "%.9g", v)).stripTrailingZeros().toPlainString();
     }
 
+    /** How far the camera at the GPS altitude (its own: height 0 unless a flag gives one) is below the ground; NaN: unknown. */
+    private double gpsEyeBelowMetres(PhotoOverrides o, double demGroundMetres) {
+        return demGroundMetres - gpsAltitudeMetres - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0);
+    }
+
     private PhotoCamera build(PhotoOverrides o, List<String> missing, List<String> provenance, double demGroundMetres) {
         for (String p : problems) {
             provenance.add("metadata problem: " + p);
@@ -384,13 +389,11 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             offset = o.offsetMetres();
             provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
                     + " (" + PhotoOverrides.OFFSET + ")");
-        } else if (given(gpsAltitudeMetres) && gpsAltitudeMetres + (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0)
-                < demGroundMetres - Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
-            provenance.add("camera altitude " + num(gpsAltitudeMetres) + " m from EXIF GPSAltitude not used: "
-                    + String.format(Locale.ROOT, "%.1f", demGroundMetres - gpsAltitudeMetres
-                    - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0)) + " m below the DEM surface ("
-                    + String.format(Locale.ROOT, "%.1f", demGroundMetres) + " m); standing on the DEM instead ("
-                    + PhotoOverrides.OFFSET + " 0; " + PhotoOverrides.ALTITUDE + " gives an altitude)");
+        } else if (given(gpsAltitudeMetres) && gpsEyeBelowMetres(o, demGroundMetres) > Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
+            provenance.add(String.format(Locale.ROOT, "camera altitude %s m from EXIF GPSAltitude not used: %.1f m below"
+                    + " the DEM surface (%.1f m); standing on the DEM instead (%s 0; %s gives an altitude)",
+                    num(gpsAltitudeMetres), gpsEyeBelowMetres(o, demGroundMetres), demGroundMetres, PhotoOverrides.OFFSET,
+                    PhotoOverrides.ALTITUDE));
         } else if (given(gpsAltitudeMetres)) {
             altitude = gpsAltitudeMetres;
             defaultHeight = 0;

@@ -342,7 +342,7 @@ public final class OrientationEstimator {
      * second-best, is refined so; at the first offset found (of at least {@link #UNSURE_ALTITUDE_MIN_METRES}) the whole
      * estimate is made again against the reference from that eye (every heading searched, the margin taken there),
      * once per photo; it is kept when that estimate is confident and agrees with the pose found. Where neither pose
-     * finds such an eye, the search is made from raised eyes ({@link #fromRaisedEyes}); else the unsure estimate is
+     * finds such an eye, the search is made from raised eyes ({@link #fromSearchedEyes}); else the unsure estimate is
      * returned as it was.
      *
      * @param e      the estimate from {@link #estimate}, against {@code at0}
@@ -371,7 +371,7 @@ public final class OrientationEstimator {
                 }
                 break; // one search made again per photo: it covers every heading from that eye
             }
-            return e.inlierShare() >= RAISED_EYES_MIN_INLIER_SHARE ? fromRaisedEyes(e, sky, edges, at0, raised, priors, t0) : e;
+            return e.inlierShare() >= RAISED_EYES_MIN_INLIER_SHARE ? fromSearchedEyes(e, sky, edges, at0, raised, priors, t0) : e;
         }
         AltitudeFit a = altitudeFit(e.pose(), sky, at0, raised, priors, 0);
         if (a == null) {
@@ -404,7 +404,7 @@ public final class OrientationEstimator {
      * searched (a DEM's cells under a summit or ridge are lower than the top). Called only where at least
      * {@link #RAISED_EYES_MIN_INLIER_SHARE} of the skyline fits the assumed eye's best pose.
      */
-    static OrientationEstimate fromRaisedEyes(OrientationEstimate e, Skyline sky, PhotoEdges edges, Reference at0,
+    static OrientationEstimate fromSearchedEyes(OrientationEstimate e, Skyline sky, PhotoEdges edges, Reference at0,
                                               RaisedReference raised, OrientationPriors priors, long t0) {
         Samples fine = Samples.of(sky, FINE_SAMPLES);
         Target skyOnly = Target.of(fine, PhotoEdges.NONE, null, priors.lens());
@@ -458,7 +458,7 @@ public final class OrientationEstimator {
     }
 
     /**
-     * {@link #fromRaisedEyes} runs only where at least this share of the skyline fits the assumed eye's best pose: a
+     * {@link #fromSearchedEyes} runs only where at least this share of the skyline fits the assumed eye's best pose: a
      * skyline a quarter or more of which fits no pose is more likely occluded (trees, buildings, clouds), which no eye
      * explains, and the searches cost 3–5 s a photo. With every unsure photo searched so, the benchmark's photos with
      * 30 % of the skyline hidden (0.41–0.76 fitting) took 5.0 s instead of 1.4 s median to match, and no answer
@@ -468,14 +468,14 @@ public final class OrientationEstimator {
     public static final double RAISED_EYES_MIN_INLIER_SHARE = 0.75;
 
     /**
-     * The eyes, metres above the one assumed, that {@link #fromRaisedEyes} searches from, in turn: 20 m, a GPS
+     * The eyes, metres above the one assumed, that {@link #fromSearchedEyes} searches from, in turn: 20 m, a GPS
      * altitude's error or a DEM's cell under a summit is often that large (eyes 15, 25 and 35 m up found a 25 m error's
      * photos alike), then 50 m for larger ones.
      */
     public static final List<Double> RAISED_EYES_METRES = List.of(20.0, 50.0);
 
     /**
-     * The eyes {@link #fromRaisedEyes} searches from, metres from the one assumed, in turn: each of
+     * The eyes {@link #fromSearchedEyes} searches from, metres from the one assumed, in turn: each of
      * {@link #RAISED_EYES_METRES} up, then as far down. Lowered eyes count where the eye assumed stands above the
      * ground by at least that much (an altitude given, as an EXIF GPS altitude, may be tens of metres too high);
      * at the ground the renderer refuses them at once ({@link RaisedReference#at}), before anything is drawn.
@@ -638,13 +638,10 @@ public final class OrientationEstimator {
             return null;
         }
         double variance = Math.max(ALTITUDE_RESIDUAL_FLOOR_PX * ALTITUDE_RESIDUAL_FLOOR_PX, sw > 0 ? sq / sw : 0);
-        double[] weights = new double[n];
-        for (int i = 0; i < n; i++) {
-            weights[i] = sky.weight(i);
-        }
         double sigma = Math.sqrt(variance * column[4]);
+        // The residuals are the skyline samples' alone (no edges), so their weights are the samples'.
         return sigma <= ALTITUDE_SIGMA_MAX_METRES ? new double[] {p[4], sigma,
-            blockJackknifeSigma(jac, r, weights, java.util.Arrays.copyOf(rows, m), 4, ALTITUDE_JACKKNIFE_BLOCKS)} : null;
+            blockJackknifeSigma(jac, r, sky.sky().w(), java.util.Arrays.copyOf(rows, m), 4, ALTITUDE_JACKKNIFE_BLOCKS)} : null;
     }
 
     /**

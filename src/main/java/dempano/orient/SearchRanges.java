@@ -18,9 +18,6 @@ public record SearchRanges(double headingRangeDeg, double hfovMinDeg, double hfo
     /** Nothing given: a given heading taken as it is, any field of view the estimator searches. */
     public static final SearchRanges NONE = new SearchRanges(Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN);
 
-    /** The diagonal of a 36 × 24 mm frame, mm: what a 35 mm-equivalent focal length is relative to. */
-    static final double FULL_FRAME_DIAGONAL_MM = Math.hypot(36, 24);
-
     public SearchRanges {
         if (!Double.isNaN(headingRangeDeg) && !(headingRangeDeg > 0 && headingRangeDeg <= 180)) {
             throw new IllegalArgumentException("--heading-range-deg must be in (0°, 180°], got " + headingRangeDeg);
@@ -52,8 +49,9 @@ public record SearchRanges(double headingRangeDeg, double hfovMinDeg, double hfo
 
     /**
      * The horizontal field-of-view range searched for an image of {@code widthPx} × {@code heightPx} pixels, degrees
-     * {min, max}: the one given, or the focal range's (a 35 mm-equivalent focal length f spans the image's diagonal
-     * as f spans 43.27 mm: hfov = 2 atan(w / (2 f · hypot(w, h) / 43.27)), the longer focal length the narrower);
+     * {min, max}: the one given, or the focal range's (the camera model's {@link
+     * dempano.camera.CameraIntrinsics#fromFocal35mm 35 mm equivalent}: f spans the image's diagonal as f spans
+     * 43.27 mm; the longer focal length the narrower);
      * null where neither is given.
      */
     public double[] hfovRangeDeg(int widthPx, int heightPx) {
@@ -67,8 +65,7 @@ public record SearchRanges(double headingRangeDeg, double hfovMinDeg, double hfo
     }
 
     private static double hfovOf(double focal35Mm, int widthPx, int heightPx) {
-        double fxPx = focal35Mm * Math.hypot(widthPx, heightPx) / FULL_FRAME_DIAGONAL_MM;
-        return Math.toDegrees(2 * Math.atan(widthPx / (2 * fxPx)));
+        return dempano.camera.CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35Mm).horizontalFovDeg();
     }
 
     /** How the range reads in a log line, e.g. "24–70 mm (35 mm equivalent): 28.8°–73.7°". */

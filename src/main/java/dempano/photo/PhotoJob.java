@@ -9,11 +9,11 @@ import dempano.camera.PhotoCamera;
 import dempano.camera.PhotoMetadata;
 import dempano.camera.PhotoMetadataException;
 import dempano.camera.PhotoOverrides;
-import dempano.orient.SearchRanges;
 import dempano.io.CameraWriter;
 import dempano.io.OutputSet;
 import dempano.orient.OrientationEstimate;
 import dempano.orient.PhotoOrientation;
+import dempano.orient.SearchRanges;
 import dempano.summits.SummitList;
 import dempano.summits.SummitProjector;
 import dempano.summits.SummitSighting;
@@ -169,7 +169,10 @@ public final class PhotoJob {
                     + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
             o = open.placeholders(meta, o);
         }
-        PhotoCamera camera = resolve(renderer, in.settings(), meta, o);
+        PhotoCamera camera = resolve(meta, o);
+        // Where the altitude would be the EXIF one, the DEM's surface under it (once: the position does not change).
+        double gpsGround = gpsGround(renderer, in.settings(), meta, o, camera);
+        camera = Double.isNaN(gpsGround) ? camera : resolve(meta, o, gpsGround);
         List<String> firstLines = open.relabel(camera.provenance(), given, null);
         for (int i = 0; i < firstLines.size(); i++) {
             if (firstLines.get(i).equals(camera.provenance().get(i))) {
@@ -215,7 +218,7 @@ public final class PhotoJob {
                         ? "widen --heading-range-deg, or check the position" : "give --heading-range-deg (e.g. 20) to search"
                         + " around it, as for a compass"));
             }
-            camera = resolve(renderer, in.settings(), meta, open.apply(given, est.estimate(), camera.pose()));
+            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()), gpsGround);
             List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
             if (!Double.isNaN(headingRangeDeg)) {
                 prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
@@ -298,18 +301,16 @@ public final class PhotoJob {
     }
 
     /**
-     * The camera, where its altitude would be the EXIF GPSAltitude, checked against the DEM's surface there: a GPS
-     * altitude below it is not used and the camera stands on the DEM ({@link PhotoMetadata#resolve(PhotoOverrides,
-     * double)}; the tiles read are the ones the render loads).
+     * The DEM's surface at the camera's position where its altitude would be the EXIF GPSAltitude (no altitude or
+     * offset flag), so that a GPS altitude below it is not used ({@link PhotoMetadata#resolve(PhotoOverrides, double)};
+     * the tiles read are the ones the render loads); NaN elsewhere (nothing read).
      */
-    private static PhotoCamera resolve(PanoramaRenderer renderer, PanoramaRequest settings, PhotoMetadata meta,
-                                       PhotoOverrides o) {
-        PhotoCamera camera = resolve(meta, o);
-        if (Double.isNaN(o.altitudeMetres()) && Double.isNaN(o.offsetMetres()) && !Double.isNaN(meta.gpsAltitudeMetres())) {
-            double ground = renderer.groundElevationMetres(atCamera(settings, camera.pose().latDeg(), camera.pose().lonDeg()));
-            camera = resolve(meta, o, ground);
-        }
-        return camera;
+    private static double gpsGround(PanoramaRenderer renderer, PanoramaRequest settings, PhotoMetadata meta,
+                                    PhotoOverrides o, PhotoCamera camera) {
+        boolean gpsAltitude = Double.isNaN(o.altitudeMetres()) && Double.isNaN(o.offsetMetres())
+                && !Double.isNaN(meta.gpsAltitudeMetres());
+        return gpsAltitude ? renderer.groundElevationMetres(atCamera(settings, camera.pose().latDeg(), camera.pose().lonDeg()))
+                : Double.NaN;
     }
 
     /**

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dempano.camera.CameraIntrinsics;
 import org.junit.jupiter.api.Test;
 
 /** The search ranges of a photo's estimate: the focal range's fields of view in closed form, and what is refused. */
@@ -18,11 +17,11 @@ class SearchRangesTest {
         double[] r = new SearchRanges(NAN, NAN, NAN, 24, 70).hfovRangeDeg(6000, 4000);
         assertArrayEquals(new double[] {Math.toDegrees(2 * Math.atan(18 / 70.0)), Math.toDegrees(2 * Math.atan(18 / 24.0))},
                 r, 1e-9);
-        // Any shape: the same field of view as the camera model's focal length from a 35 mm equivalent gives.
+        // Any shape: the image's width is w / hypot(w, h) of its diagonal, which f spans as it spans 43.27 mm.
         for (int[] size : new int[][] {{4000, 3000}, {1080, 1920}, {960, 640}}) {
             double[] q = new SearchRanges(NAN, NAN, NAN, 28, 28).hfovRangeDeg(size[0], size[1]);
-            CameraIntrinsics k = CameraIntrinsics.fromFocal35mm(size[0], size[1], 28);
-            double hfov = Math.toDegrees(2 * Math.atan(size[0] / 2.0 / k.fxPx()));
+            double halfWidthMm = size[0] / Math.hypot(size[0], size[1]) * Math.hypot(36, 24) / 2;
+            double hfov = Math.toDegrees(2 * Math.atan(halfWidthMm / 28));
             assertArrayEquals(new double[] {hfov, hfov}, q, 1e-9);
         }
     }
