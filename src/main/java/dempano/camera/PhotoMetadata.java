@@ -298,7 +298,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
      */
     public List<String> missing(PhotoOverrides overrides) {
         List<String> missing = new ArrayList<>();
-        build(overrides, missing, new ArrayList<>(), Double.NaN);
+        build(overrides, java.util.Set.of(), missing, new ArrayList<>(), Double.NaN);
         return missing;
     }
 
@@ -338,9 +338,28 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
      * @param demGroundMetres the DEM surface's height at the photo's position, metres; NaN: not known (no check)
      */
     public PhotoCamera resolve(PhotoOverrides overrides, double demGroundMetres) {
+        return resolve(overrides, demGroundMetres, java.util.Set.of());
+    }
+
+    /** How a provenance line says that a value was estimated instead of given. */
+    public static final String ESTIMATED = "estimated from the skyline";
+
+    /**
+     * As {@link #resolve(PhotoOverrides, double)}, where some of the overrides' values are not the user's but
+     * estimates (the photo command's, from the skyline): their provenance lines say so ("heading 235.5° estimated
+     * from the skyline", "standing on the DEM corrected by 12.5 m (estimated from the skyline)") instead of naming
+     * flags nobody gave.
+     *
+     * @param estimatedFlags the flags ({@link PhotoOverrides#HEADING}, {@link PhotoOverrides#PITCH},
+     *                       {@link PhotoOverrides#ROLL}, {@link PhotoOverrides#HFOV}, {@link PhotoOverrides#OFFSET},
+     *                       {@link PhotoOverrides#ALTITUDE}: the EXIF GPS altitude corrected by an estimated offset,
+     *                       {@link PhotoOverrides#CAMERA_HEIGHT}: the camera's own height that such an altitude keeps)
+     *                       whose values in {@code overrides} are estimates; others are ignored
+     */
+    public PhotoCamera resolve(PhotoOverrides overrides, double demGroundMetres, java.util.Set<String> estimatedFlags) {
         List<String> missing = new ArrayList<>();
         List<String> provenance = new ArrayList<>();
-        PhotoCamera camera = build(overrides, missing, provenance, demGroundMetres);
+        PhotoCamera camera = build(overrides, java.util.Set.copyOf(estimatedFlags), missing, provenance, demGroundMetres);
         if (!missing.isEmpty()) {
             throw new PhotoMetadataException(source + ": the photo's camera is not fully known:\n  - "
                     + String.join("\n  - ", missing));
@@ -365,7 +384,13 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return demGroundMetres - gpsAltitudeMetres - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0);
     }
 
-    private PhotoCamera build(PhotoOverrides o, List<String> missing, List<String> provenance, double demGroundMetres) {
+    /** Where a value given in the overrides came from: "from FLAG", or {@link #ESTIMATED}. */
+    private static String from(String flag, java.util.Set<String> estimated) {
+        return estimated.contains(flag) ? ESTIMATED : "from " + flag;
+    }
+
+    private PhotoCamera build(PhotoOverrides o, java.util.Set<String> estimated, List<String> missing,
+                              List<String> provenance, double demGroundMetres) {
         for (String p : problems) {
             provenance.add("metadata problem: " + p);
         }
@@ -384,11 +409,13 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         double offset = 0, altitude = Double.NaN, defaultHeight = Viewpoint.DEFAULT_EYE_HEIGHT_METRES;
         if (given(o.altitudeMetres())) {
             altitude = o.altitudeMetres();
-            provenance.add("standing altitude " + num(altitude) + " m from " + PhotoOverrides.ALTITUDE);
+            provenance.add("standing altitude " + num(altitude) + " m " + (estimated.contains(PhotoOverrides.ALTITUDE)
+                    ? "(the camera's altitude, the EXIF GPSAltitude corrected by the offset " + ESTIMATED + ")"
+                    : "from " + PhotoOverrides.ALTITUDE));
         } else if (given(o.offsetMetres())) {
             offset = o.offsetMetres();
             provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
-                    + " (" + PhotoOverrides.OFFSET + ")");
+                    + " (" + (estimated.contains(PhotoOverrides.OFFSET) ? ESTIMATED : PhotoOverrides.OFFSET) + ")");
         } else if (given(gpsAltitudeMetres) && gpsEyeBelowMetres(o, demGroundMetres) > Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
             provenance.add(String.format(Locale.ROOT, "camera altitude %s m from EXIF GPSAltitude not used: %.1f m below"
                     + " the DEM surface (%.1f m); standing on the DEM instead (%s 0; %s gives an altitude)",
@@ -404,12 +431,13 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         }
         double cameraHeight = given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : defaultHeight;
         provenance.add("camera " + num(cameraHeight) + " m above the standing altitude"
-                + (given(o.cameraHeightMetres()) ? " (" + PhotoOverrides.CAMERA_HEIGHT + ")" : " (default)"));
+                + (!given(o.cameraHeightMetres()) ? " (default)" : estimated.contains(PhotoOverrides.CAMERA_HEIGHT)
+                ? " (the altitude is the camera's)" : " (" + PhotoOverrides.CAMERA_HEIGHT + ")"));
         // Heading.
         double heading = Double.NaN;
         if (given(o.headingDeg())) {
             heading = o.headingDeg();
-            provenance.add("heading " + num(heading) + "° from " + PhotoOverrides.HEADING);
+            provenance.add("heading " + num(heading) + "° " + from(PhotoOverrides.HEADING, estimated));
         } else if (given(imageDirectionDeg)) {
             String what = "the EXIF direction (GPSImgDirection " + num(imageDirectionDeg) + "°)";
             switch (imageDirectionReference) {
@@ -450,11 +478,11 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         }
         // Pitch and roll.
         double pitch = pick(o.pitchDeg(), xmpPitchDeg, "pitch", PhotoOverrides.PITCH, "0 = level, positive up",
-                missing, provenance);
+                estimated, missing, provenance);
         double roll = pick(o.rollDeg(), xmpRollDeg, "roll", PhotoOverrides.ROLL,
-                "0 = level horizon, positive = camera turned clockwise", missing, provenance);
+                "0 = level horizon, positive = camera turned clockwise", estimated, missing, provenance);
         // Intrinsics.
-        CameraIntrinsics intrinsics = intrinsics(o, missing, provenance);
+        CameraIntrinsics intrinsics = intrinsics(o, estimated, missing, provenance);
 
         if (!missing.isEmpty()) {
             return null;
@@ -468,10 +496,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         }
     }
 
-    private double pick(double flag, double xmp, String what, String flagName, String hint, List<String> missing,
-                        List<String> provenance) {
+    private double pick(double flag, double xmp, String what, String flagName, String hint, java.util.Set<String> estimated,
+                        List<String> missing, List<String> provenance) {
         if (given(flag)) {
-            provenance.add(what + " " + num(flag) + "° from " + flagName);
+            provenance.add(what + " " + num(flag) + "° " + from(flagName, estimated));
             return flag;
         }
         if (given(xmp)) {
@@ -482,7 +510,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return Double.NaN;
     }
 
-    private CameraIntrinsics intrinsics(PhotoOverrides o, List<String> missing, List<String> provenance) {
+    private CameraIntrinsics intrinsics(PhotoOverrides o, java.util.Set<String> estimated, List<String> missing,
+                                        List<String> provenance) {
         String size = widthPx + " × " + heightPx + " px as displayed"
                 + (quarterTurn() ? " (EXIF orientation " + orientation + ": the stored image turned a quarter)" : "");
         if (o.calibration() != null) {
@@ -509,8 +538,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         try {
             if (given(o.horizontalFovDeg())) {
                 c = CameraIntrinsics.fromHorizontalFov(widthPx, heightPx, o.horizontalFovDeg());
-                provenance.add("focal length " + num(c.fxPx()) + " px from " + PhotoOverrides.HFOV + " "
-                        + num(o.horizontalFovDeg()) + "°");
+                provenance.add("focal length " + num(c.fxPx()) + " px from " + (estimated.contains(PhotoOverrides.HFOV)
+                        ? "a horizontal field of view of " + num(o.horizontalFovDeg()) + "° " + ESTIMATED
+                        : PhotoOverrides.HFOV + " " + num(o.horizontalFovDeg()) + "°"));
             } else if (given(o.focal35mmMm())) {
                 c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, o.focal35mmMm());
                 provenance.add("focal length " + num(c.fxPx()) + " px from " + PhotoOverrides.FOCAL35 + " "

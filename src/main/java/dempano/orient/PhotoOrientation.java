@@ -85,43 +85,39 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         return altitude && e != null && Double.isFinite(e.altitudeOffsetMetres());
     }
 
-    /** How a provenance line says that a value was estimated. */
-    public static final String ESTIMATED = "estimated from the skyline";
+    /** How a provenance line says that a value was estimated ({@link PhotoMetadata#ESTIMATED}). */
+    public static final String ESTIMATED = PhotoMetadata.ESTIMATED;
 
     /**
-     * The camera's provenance ({@link PhotoMetadata#resolve}) with the lines of the values that {@link #apply} (or
-     * {@link #placeholders}) passed in as flags saying where they came from instead of naming flags nobody gave:
-     * "heading 235.5° estimated from the skyline", not "… from --heading-deg".
+     * The flags whose values {@link #apply} (or, with a null estimate, {@link #placeholders}) passed in as overrides
+     * though nobody gave them: for {@link PhotoMetadata#resolve(PhotoOverrides, double, java.util.Set)}, whose
+     * provenance then says "heading 235.5° estimated from the skyline", not "… from --heading-deg".
      *
      * @param given    the overrides as the user gave them
-     * @param estimate the estimate applied; null: before the estimate (the altitude is not relabelled)
+     * @param estimate the estimate applied; null: the placeholders before the estimate (no altitude)
      */
-    public List<String> relabel(List<String> provenance, PhotoOverrides given, OrientationEstimate estimate) {
-        List<String> out = new ArrayList<>();
-        for (String line : provenance) {
-            String l = line;
-            l = heading ? replaceEnd(l, "heading ", " from " + PhotoOverrides.HEADING, " " + ESTIMATED) : l;
-            l = pitch ? replaceEnd(l, "pitch ", " from " + PhotoOverrides.PITCH, " " + ESTIMATED) : l;
-            l = roll ? replaceEnd(l, "roll ", " from " + PhotoOverrides.ROLL, " " + ESTIMATED) : l;
-            if (hfov && l.startsWith("focal length ") && l.contains(" px from " + PhotoOverrides.HFOV + " ")) {
-                l = l.replace(" px from " + PhotoOverrides.HFOV + " ", " px from a horizontal field of view of ")
-                        + " " + ESTIMATED;
-            }
-            if (altitudeEstimated(estimate)) {
-                l = replaceEnd(l, "standing on the DEM", " (" + PhotoOverrides.OFFSET + ")", " (" + ESTIMATED + ")");
-                l = replaceEnd(l, "standing altitude ", " from " + PhotoOverrides.ALTITUDE,
-                        " (the camera's altitude, the EXIF GPSAltitude corrected by the offset " + ESTIMATED + ")");
-                if (Double.isNaN(given.cameraHeightMetres())) { // set by apply() only with an absolute altitude
-                    l = replaceEnd(l, "camera ", " (" + PhotoOverrides.CAMERA_HEIGHT + ")", " (the altitude is the camera's)");
-                }
-            }
-            out.add(l);
+    public java.util.Set<String> estimatedFlags(PhotoOverrides given, OrientationEstimate estimate) {
+        java.util.Set<String> flags = new java.util.HashSet<>();
+        if (heading) {
+            flags.add(PhotoOverrides.HEADING);
         }
-        return out;
-    }
-
-    private static String replaceEnd(String line, String start, String end, String by) {
-        return line.startsWith(start) && line.endsWith(end) ? line.substring(0, line.length() - end.length()) + by : line;
+        if (pitch) {
+            flags.add(PhotoOverrides.PITCH);
+        }
+        if (roll) {
+            flags.add(PhotoOverrides.ROLL);
+        }
+        if (hfov) {
+            flags.add(PhotoOverrides.HFOV);
+        }
+        if (altitudeEstimated(estimate)) {
+            flags.add(PhotoOverrides.OFFSET);
+            flags.add(PhotoOverrides.ALTITUDE);
+            if (Double.isNaN(given.cameraHeightMetres())) { // set by apply() only with an absolute altitude
+                flags.add(PhotoOverrides.CAMERA_HEIGHT);
+            }
+        }
+        return java.util.Set.copyOf(flags);
     }
 
     /** Names of the open values, for messages. */

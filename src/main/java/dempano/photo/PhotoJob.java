@@ -172,11 +172,12 @@ public final class PhotoJob {
         PhotoCamera camera = resolve(meta, o);
         // Where the altitude would be the EXIF one, the DEM's surface under it (once: the position does not change).
         double gpsGround = gpsGround(renderer, in.settings(), meta, o, camera);
-        camera = Double.isNaN(gpsGround) ? camera : resolve(meta, o, gpsGround);
-        List<String> firstLines = open.relabel(camera.provenance(), given, null);
-        for (int i = 0; i < firstLines.size(); i++) {
-            if (firstLines.get(i).equals(camera.provenance().get(i))) {
-                log.progress(firstLines.get(i)); // the placeholders of the values to be estimated are not news
+        camera = Double.isNaN(gpsGround) ? camera : resolve(meta, o, gpsGround, java.util.Set.of());
+        // The lines of the values to be estimated (placeholders until then) are not news: left out.
+        List<String> withPlaceholdersNamed = resolve(meta, o, gpsGround, open.estimatedFlags(given, null)).provenance();
+        for (int i = 0; i < withPlaceholdersNamed.size(); i++) {
+            if (withPlaceholdersNamed.get(i).equals(camera.provenance().get(i))) {
+                log.progress(withPlaceholdersNamed.get(i));
             }
         }
         PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
@@ -218,8 +219,9 @@ public final class PhotoJob {
                         ? "widen --heading-range-deg, or check the position" : "give --heading-range-deg (e.g. 20) to search"
                         + " around it, as for a compass"));
             }
-            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()), gpsGround);
-            List<String> prov = new ArrayList<>(open.relabel(camera.provenance(), given, est.estimate()));
+            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()), gpsGround,
+                    open.estimatedFlags(given, est.estimate()));
+            List<String> prov = new ArrayList<>(camera.provenance());
             if (!Double.isNaN(headingRangeDeg)) {
                 prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
                         PhotoMetadata.num(headingRangeDeg), PhotoMetadata.num(priorHeadingDeg), Double.isNaN(given.headingDeg())
@@ -289,12 +291,14 @@ public final class PhotoJob {
     }
 
     private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o) {
-        return resolve(meta, o, Double.NaN);
+        return resolve(meta, o, Double.NaN, java.util.Set.of());
     }
 
-    private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o, double demGroundMetres) {
+    /** {@link PhotoMetadata#resolve(PhotoOverrides, double, java.util.Set)}, its errors as bad arguments. */
+    private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o, double demGroundMetres,
+                                       java.util.Set<String> estimatedFlags) {
         try {
-            return meta.resolve(o, demGroundMetres);
+            return meta.resolve(o, demGroundMetres, estimatedFlags);
         } catch (PhotoMetadataException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }

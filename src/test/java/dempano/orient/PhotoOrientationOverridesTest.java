@@ -52,8 +52,9 @@ class PhotoOrientationOverridesTest {
         assertTrue(open.heading() && open.pitch() && open.roll() && open.hfov() && open.altitude(), open.toString());
         PhotoCamera placeholder = m.resolve(open.placeholders(m, PhotoOverrides.NONE));
         OrientationEstimate e = estimate(235.5, 1.25, -4, 60, 12.5);
-        PhotoCamera c = m.resolve(open.apply(PhotoOverrides.NONE, e, placeholder.pose()));
-        List<String> lines = open.relabel(c.provenance(), PhotoOverrides.NONE, e);
+        PhotoOverrides applied = open.apply(PhotoOverrides.NONE, e, placeholder.pose());
+        PhotoCamera c = m.resolve(applied, Double.NaN, open.estimatedFlags(PhotoOverrides.NONE, e));
+        List<String> lines = c.provenance();
         String all = String.join("\n", lines);
         for (String flag : new String[] {PhotoOverrides.HEADING, PhotoOverrides.PITCH, PhotoOverrides.ROLL,
             PhotoOverrides.HFOV, PhotoOverrides.OFFSET}) {
@@ -66,8 +67,9 @@ class PhotoOrientationOverridesTest {
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("focal length ") && l.contains("field of view of 60°")
                 && l.endsWith(PhotoOrientation.ESTIMATED)), all);
         assertEquals(12.5, c.pose().offsetMetres(), 0);
-        // Before the estimate the placeholders are what relabel picks out (the job leaves them out of its log).
-        List<String> before = open.relabel(placeholder.provenance(), PhotoOverrides.NONE, null);
+        // Before the estimate the placeholders are the lines that naming them changes (the job leaves them out of its log).
+        List<String> before = m.resolve(open.placeholders(m, PhotoOverrides.NONE), Double.NaN,
+                open.estimatedFlags(PhotoOverrides.NONE, null)).provenance();
         assertEquals(placeholder.provenance().size(), before.size());
         long changed = java.util.stream.IntStream.range(0, before.size())
                 .filter(i -> !before.get(i).equals(placeholder.provenance().get(i))).count();
@@ -83,10 +85,28 @@ class PhotoOrientationOverridesTest {
         CameraPose pose = m.resolve(open.placeholders(m, PhotoOverrides.NONE)).pose();
         assertEquals(0, pose.cameraHeightMetres(), 0);
         OrientationEstimate e = estimate(10, 0, 0, 54, -20);
-        PhotoCamera c = m.resolve(open.apply(PhotoOverrides.NONE, e, pose));
+        PhotoCamera c = m.resolve(open.apply(PhotoOverrides.NONE, e, pose), Double.NaN,
+                open.estimatedFlags(PhotoOverrides.NONE, e));
         assertEquals(1480, c.pose().altitudeMetres() + c.pose().cameraHeightMetres(), 1e-9);
-        String all = String.join("\n", open.relabel(c.provenance(), PhotoOverrides.NONE, e));
+        String all = String.join("\n", c.provenance());
         assertFalse(all.contains(PhotoOverrides.ALTITUDE) || all.contains(PhotoOverrides.CAMERA_HEIGHT), all);
         assertTrue(all.contains("standing altitude 1480 m (the camera's altitude"), all);
+        assertTrue(c.provenance().contains("camera 0 m above the standing altitude (the altitude is the camera's)"), all);
+    }
+
+    @Test
+    void aValueTheUserGaveKeepsItsFlagBesideEstimatedOnes() {
+        PhotoMetadata m = meta(N, N, 35);
+        PhotoOverrides given = PhotoOverrides.NONE.withPitchDeg(2).withOffsetMetres(3);
+        PhotoOrientation open = PhotoOrientation.open(m, given, false);
+        assertTrue(open.heading() && !open.pitch() && open.roll() && !open.altitude(), open.toString());
+        PhotoCamera placeholder = m.resolve(open.placeholders(m, given));
+        OrientationEstimate e = estimate(100, 2, 1.5, 50, 7);
+        PhotoCamera c = m.resolve(open.apply(given, e, placeholder.pose()), Double.NaN, open.estimatedFlags(given, e));
+        String all = String.join("\n", c.provenance());
+        assertTrue(c.provenance().contains("pitch 2° from " + PhotoOverrides.PITCH), all);
+        assertTrue(c.provenance().contains("standing on the DEM corrected by 3 m (" + PhotoOverrides.OFFSET + ")"), all);
+        assertTrue(c.provenance().contains("heading 100° " + PhotoOrientation.ESTIMATED), all);
+        assertTrue(c.provenance().contains("roll 1.5° " + PhotoOrientation.ESTIMATED), all);
     }
 }
