@@ -170,7 +170,8 @@ public final class OrientationReport {
               there, and the first eye so found is kept where the search made again from it is confident, agrees, and the
               skyline fits better than the assumed eye's best pose fits it; where the skyline, all far, measures no eye, a
               pose confident from one raised eye, fitting better than any from the assumed eye and found from the other
-              raised eye too, is kept with the eye searched from (no standard error). Only where at least 3/4 of the
+              raised eye too, at another heading than the assumed eye's best, is kept with the eye searched from (no
+              standard error). Only where at least 3/4 of the
               skyline fits the assumed eye's best pose (`RAISED_EYES_MIN_INLIER_SHARE`): a skyline that fits less is more
               likely occluded, which no eye explains, and the searches cost 3–5 s. After each raised eye, the eye as much
               lower is searched where the assumed eye stands that far above the ground (an altitude given, as an EXIF GPS
@@ -402,8 +403,8 @@ public final class OrientationReport {
                         .collect(java.util.stream.Collectors.joining(" and "))
                 + " m higher in turn, each followed by as much lower where the assumed eye is that far above the ground (where at least " + Math.round(100 * OrientationEstimator.RAISED_EYES_MIN_INLIER_SHARE)
                 + " %% of the skyline fits the assumed eye's best pose) and the altitude fitted from the pose found there,"
-                + " kept on the same terms, or, where the skyline measures no eye, a pose confident from one raised eye and"
-                + " found from the other too)."
+                + " kept on the same terms, or, where the skyline measures no eye, a pose confident from one raised eye,"
+                + " found from the other too, at another heading than the assumed eye's best)."
                 + " Every photo is in `orientation-altitude.csv`.%n%n",
                 Math.abs(ALTITUDE_TEST_METRES), lower ? "below" : "above", OrientationEstimator.ALTITUDE_RENDERS,
                 OrientationEstimator.ALTITUDE_SIGMA_MAX_METRES,

@@ -397,7 +397,7 @@ public final class OrientationEstimator {
      * and agrees with the fitted pose, and where the skyline fits better than the assumed eye's best pose fits it, is
      * kept. Where no fit finds an eye (the skyline all far: raising the eye moves it as pitch does) a pose confident
      * from one raised eye, scoring better than the assumed eye's best, whose heading the other raised eye's search
-     * found too, is kept with that eye as its offset and no standard error (the photo's inner depth edges, a summit's
+     * found too and the assumed eye's best pose did not have, is kept with that eye as its offset and no standard error (the photo's inner depth edges, a summit's
      * own slopes, told the eyes apart). Else the estimate is returned as it was. Lowered eyes too, after each raised one
      * ({@link #searchedEyesMetres}), where the eye assumed stands high enough above the ground (an altitude given);
      * with no altitude given the eye is assumed at the ground, they are refused at once, and only raised eyes are
@@ -434,10 +434,13 @@ public final class OrientationEstimator {
         }
         // The skyline may not measure the eye (all of it far away) while the photo's inner depth edges (a summit's own
         // slopes) still tell the eyes apart: a pose confident from a raised eye, fitting better than any from the
-        // assumed eye, whose heading the other raised eye's search found too.
+        // assumed eye, whose heading the other raised eye's search found too. Not where the assumed eye's best pose
+        // has that heading already: then the eyes told nothing apart, and a margin a little over the threshold there
+        // would report an eye nobody measured (a far skyline seen from the right eye: "+50 m", heading unchanged).
         for (Searched s : found) {
             OrientationEstimate there = s.estimate();
-            if (there.unsure() || !(there.score() < e.score())) {
+            if (there.unsure() || !(there.score() < e.score())
+                    || headingGap(there.headingDeg(), e.headingDeg()) <= DISTINCT_HEADING_DEG) {
                 continue;
             }
             for (Searched other : found) {
