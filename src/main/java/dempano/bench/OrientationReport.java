@@ -155,7 +155,7 @@ public final class OrientationReport {
               proposes an offset; the panorama is rendered again from there (raising the eye also shows terrain a near slope
               hid, which the first order misses: 17 → 22.5 → 25.4 m for a true 25), the pose refined, and the step
               repeated, at most 4 renders. Kept when its standard error is at most 5 m, it is at least 2 standard errors
-              from 0 and the skyline fits better; the standard error is the larger of the formal one (the residuals'
+              and 2 m from 0 and the skyline fits better; the standard error is the larger of the formal one (the residuals'
               variance, at least 0.5 px, times the normal matrix's inverse) and a delete-a-block jackknife's (the skyline
               cut into 10 blocks, each left out in turn, the spread of the estimates from the rest: neighbouring samples err
               alike where the DEM draws a ridge a little off, and one near slope alone may decide the altitude);
@@ -397,7 +397,7 @@ public final class OrientationReport {
                 + " (`OrientationEstimator.withAltitude`: where the skyline's distances constrain it, a fit of the altitude with"
                 + " the angles proposes an offset, the panorama is rendered again from there, up to %d renders; kept when its"
                 + " standard error (the larger of the formal one and a block jackknife's) is at most %.0f m, it is at least"
-                + " %.0f standard errors from 0 and the skyline fits better; an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
+                + " %.0f standard errors and " + String.format(Locale.ROOT, "%.0f", OrientationEstimator.ALTITUDE_MIN_KEPT_METRES) + " m from 0 and the skyline fits better; an unsure estimate's best (then second-best) pose is tried so, and the whole search is made again from an"
                 + " eye found at least 5 m off, kept when it is confident there; where neither finds an eye, the whole search is"
                 + " made from eyes " + OrientationEstimator.RAISED_EYES_METRES.stream().map(m -> String.format(Locale.ROOT, "%.0f", m))
                         .collect(java.util.stream.Collectors.joining(" and "))

@@ -335,7 +335,7 @@ public final class OrientationEstimator {
      * renders, until a step is under {@link #ALTITUDE_STEP_METRES}). A render, not the first-order profile, decides:
      * raising the eye also shows terrain a near slope hid. The offset is kept when the pose fits the skyline better
      * with it, its standard error is at most {@link #ALTITUDE_SIGMA_MAX_METRES} and it is at least
-     * {@link #ALTITUDE_SIGNIFICANCE} standard errors from 0; else the estimate is returned as it was.
+     * {@link #ALTITUDE_SIGNIFICANCE} standard errors and {@link #ALTITUDE_MIN_KEPT_METRES} from 0; else the estimate is returned as it was.
      *
      * <p>A confident estimate keeps its margin and flag (taken at the eye assumed). An unsure one may be unsure
      * because the eye is wrong (a near ridge that does not fit at any heading): its best pose, and where that finds no offset its
@@ -562,10 +562,23 @@ public final class OrientationEstimator {
             pose = refine(pose, skyOnly, w, h, ref.profile(), priors);
         }
         double after = score(residualsPx(pose, fine, w, h, ref.profile(), priors.lens()), skyOnly, TRUNCATION_PX);
-        if (!(Math.abs(offset) >= ALTITUDE_SIGNIFICANCE * kept) || !(after < before) || !(kept <= ALTITUDE_SIGMA_MAX_METRES)) {
+        if (!measuresOffset(offset, kept) || !(after < before)) {
             return null;
         }
         return new AltitudeFit(pose, offset, kept, ref, fine);
+    }
+
+    /**
+     * Whether an altitude offset is told apart from none: its standard error at most
+     * {@link #ALTITUDE_SIGMA_MAX_METRES}, and the offset at least {@link #ALTITUDE_SIGNIFICANCE} standard errors and
+     * {@link #ALTITUDE_MIN_KEPT_METRES} from 0. False for NaN.
+     *
+     * @param offsetMetres how much higher the eye is than assumed, metres
+     * @param sigmaMetres  its standard error, metres
+     */
+    static boolean measuresOffset(double offsetMetres, double sigmaMetres) {
+        return sigmaMetres <= ALTITUDE_SIGMA_MAX_METRES
+                && Math.abs(offsetMetres) >= Math.max(ALTITUDE_SIGNIFICANCE * sigmaMetres, ALTITUDE_MIN_KEPT_METRES);
     }
 
     /**
@@ -574,6 +587,13 @@ public final class OrientationEstimator {
      * and keeping those cost up to 1 % of field of view; 25 m off, it proposes 21 … 25 m at 1 … 2 m.
      */
     public static final double ALTITUDE_SIGNIFICANCE = 2;
+    /**
+     * Smallest altitude offset that is kept, metres, however small its standard error: with the eye right, hazy and
+     * noisy benchmark photos kept offsets of −0.7 … −1.6 m at standard errors of 0.2 … 0.5 m (all of one sign: the
+     * skyline found in them lies a little off where contrast is low), and an eye a metre or two off changes the
+     * photo's render by no more than that.
+     */
+    public static final double ALTITUDE_MIN_KEPT_METRES = 2;
     /** Largest standard error of an altitude offset that is kept, metres. */
     public static final double ALTITUDE_SIGMA_MAX_METRES = 5;
     /** Smallest residual, pixels, the altitude's standard error assumes per sample (the panorama's rows are quantized). */

@@ -104,6 +104,22 @@ class AltitudeRefinementTest {
         assertTrue(renders[0] >= 1 && renders[0] <= OrientationEstimator.ALTITUDE_RENDERS, "renders " + renders[0]);
     }
 
+    /**
+     * {offset metres, standard error metres, whether it is told apart from none}: the benchmark's offsets wrongly kept
+     * at the true eye (−0.7 … −1.6 m at 0.2 … 0.5 m), offsets at the 2 m floor and at two standard errors, a standard
+     * error over the 5 m cap, NaN.
+     */
+    static final double[][] OFFSET_DECISIONS = {
+        {-1.6, 0.47, 0}, {-0.7, 0.19, 0}, {1.99, 0.1, 0}, {2.0, 0.1, 1}, {-2.0, 0.1, 1}, {3.9, 2, 0}, {4.0, 2, 1},
+        {25, 1.7, 1}, {30, 5.01, 0}, {30, 5, 1}, {Double.NaN, 1, 0}, {10, Double.NaN, 0}};
+
+    @Test
+    void anOffsetIsKeptAtTwoStandardErrorsAndTwoMetresFromNone() {
+        for (double[] row : OFFSET_DECISIONS) {
+            assertEquals(row[2] == 1, OrientationEstimator.measuresOffset(row[0], row[1]), java.util.Arrays.toString(row));
+        }
+    }
+
     @Test
     void anEstimateUnsureBecauseTheEyeIsWrongIsMadeAgainFromTheEyeFound() {
         // 30 m higher than assumed: at the assumed eye no heading fits the near ridge and the far range together
