@@ -132,10 +132,20 @@ public final class HgtReader {
                 throw new DemException(file + ": its name says tile " + id + " but the zip holds " + found.getName()
                         + " (tile " + TileId.parseFileName(base) + "); rename the file or fetch the right tile");
             }
+            byte[] bytes;
             try (InputStream in = zip.getInputStream(found)) {
                 // Cap the read so a lying archive cannot exhaust memory.
-                return in.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
+                bytes = in.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
             }
+            // ZipFile checks no checksum: a flipped bit in a stored (or deflated) entry would be a wrong height.
+            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+            crc.update(bytes);
+            if (found.getCrc() == -1 || crc.getValue() != found.getCrc()) {
+                throw new DemException(file + ": corrupt zip: the checksum of " + found.getName() + " does not match"
+                        + (found.getCrc() == -1 ? " (the archive records none)" : String.format(
+                        " (CRC-32 %08x recorded, %08x read)", found.getCrc(), crc.getValue())) + "; fetch the tile again");
+            }
+            return bytes;
         }
     }
 }

@@ -108,6 +108,26 @@ class DemInputProblemsTest {
                 new java.util.Random(1).ints(5000, 0, 256).collect(java.io.ByteArrayOutputStream::new,
                         (o, b) -> o.write(b), (a, b) -> { }).toByteArray()),
                 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true, List.of("{dir}/N43E007.hgt.zip", "is not a zip archive")));
+        t.add(Arguments.of("stored zip with one bit flipped in its tile", (Setup) d -> {
+            byte[] tile = srtm3(new TileId(43, 7), 0);
+            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+            crc.update(tile);
+            java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+            try (java.util.zip.ZipOutputStream z = new java.util.zip.ZipOutputStream(bytes)) {
+                java.util.zip.ZipEntry e = new java.util.zip.ZipEntry("N43E007.hgt");
+                e.setMethod(java.util.zip.ZipEntry.STORED); // the tile's bytes as they are, so one can be flipped
+                e.setSize(tile.length);
+                e.setCrc(crc.getValue());
+                z.putNextEntry(e);
+                z.write(tile);
+                z.closeEntry();
+            }
+            byte[] zip = bytes.toByteArray();
+            int sample = 2 * (600 * 1201 + 600) + 1; // the low byte of the sample under the viewpoint: still plausible
+            zip[indexOf(zip, tile) + sample] ^= 4;
+            Files.write(d.resolve("N43E007.hgt.zip"), zip);
+        }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
+                List.of("{dir}/N43E007.hgt.zip", "corrupt zip", "checksum of N43E007.hgt does not match")));
         t.add(Arguments.of("zip without .hgt", (Setup) d -> HgtTestFiles.zip(d, "N43E007.hgt.zip", "readme.txt",
                 Files.write(d.resolve("readme.txt"), new byte[] {'x'}).toString()),
                 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true, List.of("{dir}/N43E007.hgt.zip", "zip holds no .hgt file")));
@@ -174,6 +194,20 @@ class DemInputProblemsTest {
         Assumptions.assumeFalse(Files.isReadable(p), "cannot make a file unreadable here; test skipped");
         DemException e = assertThrows(DemException.class, () -> new DemDirectory(dir).tile(new TileId(43, 7)));
         assertTrue(e.getMessage().contains(p.toString()) && e.getMessage().contains("not readable"), e.getMessage());
+    }
+
+    /** Where {@code part}'s first 64 bytes start in {@code whole}. */
+    static int indexOf(byte[] whole, byte[] part) {
+        outer:
+        for (int i = 0; i + 64 <= whole.length; i++) {
+            for (int k = 0; k < 64; k++) {
+                if (whole[i + k] != part[k]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        throw new AssertionError("not found");
     }
 
     // ---- Plausibility warnings ----
