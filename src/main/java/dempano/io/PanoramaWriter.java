@@ -1,7 +1,6 @@
 package dempano.io;
 
 import com.google.gson.Gson;
-import com.google.gson.GsonBuilder;
 import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
 import dempano.panorama.PanoramaGeometry;
@@ -214,7 +213,7 @@ public final class PanoramaWriter {
         List<String> names = new ArrayList<>();
         files.forEach(f -> names.add(f.getFileName().toString()));
         doc.put("files", names);
-        Gson gson = new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create();
+        Gson gson = Json.writer();
         return gson.toJson(doc) + "\n";
     }
 }

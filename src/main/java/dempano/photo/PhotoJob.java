@@ -1,6 +1,5 @@
 package dempano.photo;
 
-import com.google.gson.GsonBuilder;
 import dempano.CameraImage;
 import dempano.CameraRequest;
 import dempano.PanoramaRenderer;
@@ -234,7 +233,7 @@ public final class PhotoJob {
             prov.add(line);
             camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
             orientationOverlay = est.overlay();
-            com.google.gson.Gson gson = new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues().create();
+            com.google.gson.Gson gson = dempano.io.Json.writer();
             com.google.gson.JsonObject json = gson.toJsonTree(est.estimate()).getAsJsonObject();
             json.addProperty("matchedWidthPx", est.matchedWidthPx()); // the image matched in (MatchImage)
             json.addProperty("matchedHeightPx", est.matchedHeightPx());
