@@ -42,9 +42,28 @@ public final class CameraWriter {
      * @param summits    the summits in frame ({@link dempano.summits.SummitProjector#project(CameraImage,
      *                   dempano.summits.SummitList)}); null = no summit files
      * @param provenance where each camera value came from (a line each), for the metadata
+     * @param files      more files of the set ({@link ExtraFile}), in order
      */
-    public record Extras(BufferedImage photo, List<SummitSighting> summits, List<String> provenance) {
-        public static final Extras NONE = new Extras(null, null, List.of());
+    public record Extras(BufferedImage photo, List<SummitSighting> summits, List<String> provenance, List<ExtraFile> files) {
+        public static final Extras NONE = new Extras(null, null, List.of(), List.of());
+
+        public Extras {
+            files = List.copyOf(files);
+        }
+
+        public Extras(BufferedImage photo, List<SummitSighting> summits, List<String> provenance) {
+            this(photo, summits, provenance, List.of());
+        }
+    }
+
+    /**
+     * A file of the set besides the camera's own (the photo job's {@code P-orientation.png/json}): written before
+     * {@code P.json} and listed in it, so that a later run of the prefix that does not make it removes it.
+     *
+     * @param suffix after the prefix, e.g. {@code "-orientation.json"}
+     * @param bytes  the file's content
+     */
+    public record ExtraFile(String suffix, byte[] bytes) {
     }
 
     /** Writes every file for prefix P; returns their paths. */
@@ -74,6 +93,7 @@ public final class CameraWriter {
     public static List<Path> stage(OutputSet set, CameraImage image, Extras extras) throws IOException {
         List<String> targets = suffixes(extras.summits() != null);
         image.layers().forEach(l -> targets.add("-" + l.fileName() + ".npy"));
+        extras.files().forEach(f -> targets.add(f.suffix()));
         set.checkTargets(targets);
         List<Path> files = new ArrayList<>();
         if (image.hasColour()) {
@@ -94,6 +114,9 @@ public final class CameraWriter {
             String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
             files.add(set.write("-summits.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
             files.add(set.write("-summits.csv", out -> out.write(csv.getBytes(StandardCharsets.UTF_8))));
+        }
+        for (ExtraFile f : extras.files()) {
+            files.add(set.write(f.suffix(), out -> out.write(f.bytes())));
         }
         List<Path> all = new ArrayList<>(files);
         all.add(set.target(".json"));

@@ -242,14 +242,11 @@ public final class PhotoJob {
         CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
         List<SummitSighting> sightings = in.summits() == null ? null : SummitProjector.project(rendered, in.summits());
         try (OutputSet set = OutputSet.open(in.outPrefix())) {
-            List<Path> files = new ArrayList<>(CameraWriter.stage(set, rendered,
-                    new CameraWriter.Extras(photo, sightings, camera.provenance())));
-            if (orientationOverlay != null) {
-                byte[] png = pngBytes(orientationOverlay);
-                String json = orientationJson + "\n";
-                files.add(set.write("-orientation.png", out -> out.write(png)));
-                files.add(set.write("-orientation.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
-            }
+            List<CameraWriter.ExtraFile> orientationFiles = orientationOverlay == null ? List.of() : List.of(
+                    new CameraWriter.ExtraFile("-orientation.png", pngBytes(orientationOverlay)),
+                    new CameraWriter.ExtraFile("-orientation.json", (orientationJson + "\n").getBytes(StandardCharsets.UTF_8)));
+            List<Path> files = CameraWriter.stage(set, rendered,
+                    new CameraWriter.Extras(photo, sightings, camera.provenance(), orientationFiles));
             set.commit();
             return new Result(camera, rendered, files);
         }

@@ -157,6 +157,16 @@ class PhotoCliTest {
                 "--focal35-range-mm", "24,70");
         assertEquals(0, given.exit(), given.err());
         assertTrue(given.err().contains("not used: the field of view is known"), given.err());
+        // The estimate's files are the set's: listed in P.json, and gone after a run of the prefix that estimates nothing.
+        assertTrue(Files.readString(Path.of(prefix + ".json")).contains("ranged-orientation.json"));
+        Run pinned = run("photo", truth + ".png", "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20",
+                "--lat", "46.5", "--lon", "8.5", "--offset-m", "0", "--heading-deg", "200", "--pitch-deg", "-2",
+                "--roll-deg", "0", "--hfov-deg", "50");
+        assertEquals(0, pinned.exit(), pinned.err());
+        for (String stale : new String[] {"-orientation.json", "-orientation.png"}) {
+            assertFalse(Files.exists(Path.of(prefix + stale)), prefix + stale + " left from the run before");
+        }
+        assertTrue(Files.exists(Path.of(prefix + "-overlay.png")));
     }
 
     @Test
