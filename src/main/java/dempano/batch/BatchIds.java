@@ -44,6 +44,48 @@ public final class BatchIds {
         return id.toLowerCase(Locale.ROOT);
     }
 
+    /**
+     * Every file name a batch row can write, after its id: a panorama's, a photo's, summits', layers' (a superset of
+     * what one row writes, so that ids are judged alike whatever the options).
+     */
+    static final java.util.List<String> FILE_SUFFIXES = fileSuffixes();
+
+    private static java.util.List<String> fileSuffixes() {
+        java.util.Set<String> all = new java.util.LinkedHashSet<>();
+        for (boolean pfm : new boolean[] {false, true}) {
+            all.addAll(dempano.io.PanoramaWriter.suffixes(true, true, java.util.EnumSet.allOf(dempano.panorama.Layer.class),
+                    new dempano.io.PanoramaWriter.Options(pfm, java.util.List.of(), dempano.io.SummitWriter.LabelOptions.DEFAULT)));
+        }
+        all.addAll(dempano.io.CameraWriter.suffixes(true));
+        all.addAll(java.util.List.of("-orientation.png", "-orientation.json"));
+        return java.util.List.copyOf(all);
+    }
+
+    /**
+     * The other ids (as {@link #collisionKey}s) whose files could share a name with this id's, each with that name:
+     * {@code a} and {@code a-distance} both write {@code a-distance.png} (the one its distance picture, the other its
+     * colour panorama), so the second would overwrite the first's file.
+     *
+     * @return collision key of the other id → the file name both would write (lower case)
+     */
+    public static java.util.Map<String, String> clashingIds(String id) {
+        String key = collisionKey(id);
+        java.util.Map<String, String> out = new java.util.LinkedHashMap<>();
+        for (String mine : FILE_SUFFIXES) {
+            String name = key + mine.toLowerCase(Locale.ROOT);
+            for (String theirs : FILE_SUFFIXES) {
+                String t = theirs.toLowerCase(Locale.ROOT);
+                if (name.endsWith(t) && name.length() > t.length()) {
+                    String other = name.substring(0, name.length() - t.length());
+                    if (!other.equals(key)) {
+                        out.putIfAbsent(other, name);
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
     /** The id with control characters shown as {@code ?}, for one-line messages. */
     static String printable(String id) {
         StringBuilder b = new StringBuilder(id.length());

@@ -107,12 +107,15 @@ public final class BatchRun {
                 Rendered rendered = null;
                 String idProblem = BatchIds.problem(row.id());
                 String first = idProblem == null ? seen.putIfAbsent(BatchIds.collisionKey(row.id()), row.where()) : null;
+                String clash = idProblem == null && first == null ? clash(row, seen) : null;
                 if (!row.valid()) {
                     result = BatchResult.error(row, row.error(), 0);
                 } else if (idProblem != null) {
                     result = BatchResult.error(row, prefixed(row, idProblem), 0);
                 } else if (first != null) {
                     result = BatchResult.error(row, prefixed(row, "duplicate id '" + row.id() + "' (first at " + first + ")"), 0);
+                } else if (clash != null) {
+                    result = BatchResult.error(row, prefixed(row, clash), 0);
                 } else {
                     try {
                         if (row.photo() != null) {
@@ -250,6 +253,21 @@ public final class BatchRun {
         BatchPhoto photo = row.photo();
         return PhotoJob.run(renderer, new PhotoJob.Input(photo.image(), photo.overrides(), null, null, photo.ranges(),
                 row.request(), null, outDir.resolve(row.id()).toString()), PhotoJob.Log.NONE).files();
+    }
+
+    /**
+     * Why a row's files would share names with an earlier row's ({@link BatchIds#clashingIds}: ids {@code a} and
+     * {@code a-distance} both write {@code a-distance.png}); null when they would not.
+     */
+    private static String clash(BatchRow row, Map<String, String> seen) {
+        for (Map.Entry<String, String> c : BatchIds.clashingIds(row.id()).entrySet()) {
+            String where = seen.get(c.getKey());
+            if (where != null) {
+                return "id '" + row.id() + "' would write " + c.getValue() + ", a file of id '" + c.getKey() + "' (" + where
+                        + "): choose ids that are not another id with a file suffix";
+            }
+        }
+        return null;
     }
 
     /** Renders a panorama row into a set opened first (an unwritable destination is found before rendering). */

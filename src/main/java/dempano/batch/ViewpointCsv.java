@@ -247,6 +247,13 @@ public final class ViewpointCsv {
         if (first != null) {
             return BatchRow.invalid(line, id, at + "duplicate id '" + id + "' (first on line " + first + ")");
         }
+        for (Map.Entry<String, String> c : BatchIds.clashingIds(id).entrySet()) {
+            Integer other = firstLineOfId.get(c.getKey());
+            if (other != null) {
+                return BatchRow.invalid(line, id, at + "id '" + id + "' would write " + c.getValue() + ", a file of id '"
+                        + c.getKey() + "' (line " + other + "): choose ids that are not another id with a file suffix");
+            }
+        }
         try {
             String image = cell(f, columns, IMAGE);
             if (!image.isEmpty()) {

@@ -81,6 +81,7 @@ class BatchRunTest {
                 BatchRow.of("second", at(vp[0] + 0.03, vp[1] - 0.02).withEyeHeightMetres(30)),
                 BatchRow.of("../escape", at(vp[0], vp[1])),
                 BatchRow.of("FIRST", at(vp[0], vp[1])), // same files as "first" on a case-insensitive file system
+                BatchRow.of("first-Distance", at(vp[0], vp[1])), // its colour picture would be first's distance picture
                 BatchRow.of("third", at(vp[0] - 0.05, vp[1] + 0.04)));
         List<String> events = new ArrayList<>();
         BatchSummary s;
@@ -97,22 +98,25 @@ class BatchRunTest {
                 }
             });
         }
-        assertEquals(List.of("started 7", "0 first ok", "1 far error", "2 bad error", "3 second ok", "4 ../escape error",
-                "5 FIRST error", "6 third ok"), events);
+        assertEquals(List.of("started 8", "0 first ok", "1 far error", "2 bad error", "3 second ok", "4 ../escape error",
+                "5 FIRST error", "6 first-Distance error", "7 third ok"), events);
         assertEquals(3, s.okCount());
-        assertEquals(4, s.errorCount());
+        assertEquals(5, s.errorCount());
         assertFalse(s.cancelled());
         assertNull(s.fatal());
 
         List<CSVRecord> csv = results(out);
-        assertEquals(List.of("first", "far", "bad", "second", "../escape", "FIRST", "third"),
+        assertEquals(List.of("first", "far", "bad", "second", "../escape", "FIRST", "first-Distance", "third"),
                 csv.stream().map(c -> c.get("id")).toList());
-        assertEquals(List.of("ok", "error", "error", "ok", "error", "error", "ok"), csv.stream().map(c -> c.get("status")).toList());
+        assertEquals(List.of("ok", "error", "error", "ok", "error", "error", "error", "ok"),
+                csv.stream().map(c -> c.get("status")).toList());
         assertEquals("first.png first-distance.npy first-distance.png first.json", csv.get(0).get("files"));
         assertTrue(csv.get(1).get("error").startsWith("row 'far': no DEM data around 10.5, 10.5"), csv.get(1).get("error"));
         assertEquals("line 4: latitude 'x' is not a decimal number", csv.get(2).get("error"));
         assertTrue(csv.get(4).get("error").startsWith("row '../escape': unsafe id"), csv.get(4).get("error"));
         assertEquals("row 'FIRST': duplicate id 'FIRST' (first at row 'first')", csv.get(5).get("error"));
+        assertEquals("row 'first-Distance': id 'first-Distance' would write first-distance.png, a file of id 'first'"
+                + " (row 'first'): choose ids that are not another id with a file suffix", csv.get(6).get("error"));
         assertTrue(Double.parseDouble(csv.get(0).get("seconds")) > 0);
         assertEquals("", csv.get(0).get("error"));
 
@@ -126,7 +130,7 @@ class BatchRunTest {
         assertFalse(Files.exists(out.getParent().resolve("escape.png")));
 
         // Each good row equals the same request rendered alone by a fresh renderer, bit for bit.
-        for (int i : new int[] {0, 3, 6}) {
+        for (int i : new int[] {0, 3, 7}) {
             float[] alone;
             try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
                 alone = r.render(rows.get(i).request()).distanceArray();

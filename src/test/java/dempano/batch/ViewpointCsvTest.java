@@ -156,6 +156,18 @@ class ViewpointCsvTest {
     }
 
     @Test
+    void anIdWhoseFilesWouldBeAnotherIdsIsAnError() throws ViewpointCsvException {
+        // 'a-distance.png' is a's distance picture and a-distance's colour panorama: the later row is refused,
+        // whichever comes first; 'a-1' writes no name of a's.
+        List<BatchRow> rows = parse("id,lat,lon\na,1,1\na-distance,2,2\nb-summits,3,3\nb,4,4\na-1,5,5\n").rows();
+        assertTrue(rows.get(0).valid() && rows.get(2).valid() && rows.get(4).valid());
+        assertEquals("line 3: id 'a-distance' would write a-distance.png, a file of id 'a' (line 2): choose ids that are"
+                + " not another id with a file suffix", rows.get(1).error());
+        assertEquals("line 5: id 'b' would write b-summits.json, a file of id 'b-summits' (line 4): choose ids that are"
+                + " not another id with a file suffix", rows.get(3).error());
+    }
+
+    @Test
     void aBadRowDoesNotAffectTheNext() throws ViewpointCsvException {
         List<BatchRow> rows = parse("id,lat,lon\nx,abc,1\ny,2,2\n").rows();
         assertFalse(rows.get(0).valid());
