@@ -48,7 +48,7 @@ public final class BatchIds {
      * Every file name a batch row can write, after its id: a panorama's, a photo's, summits', layers' (a superset of
      * what one row writes, so that ids are judged alike whatever the options).
      */
-    static final java.util.List<String> FILE_SUFFIXES = fileSuffixes();
+    public static final java.util.List<String> FILE_SUFFIXES = fileSuffixes();
 
     private static java.util.List<String> fileSuffixes() {
         java.util.Set<String> all = new java.util.LinkedHashSet<>();

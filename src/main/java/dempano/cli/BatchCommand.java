@@ -70,6 +70,33 @@ public final class BatchCommand implements Callable<Integer> {
     @Option(names = "--progress", description = "Show the progress bar even when the terminal is not detected (it is shown on a terminal anyway).")
     boolean progress;
 
+    /**
+     * Which of the batch's files the viewpoints file is (the results, or a row's output), or null when none: the
+     * batch would overwrite its own input.
+     */
+    static String writtenOver(Path viewpoints, Path outDir, List<BatchRow> rows) {
+        try {
+            Path dir = viewpoints.toAbsolutePath().getParent();
+            if (dir == null || !Files.isSameFile(dir, outDir)) {
+                return null;
+            }
+        } catch (IOException e) {
+            return null; // the folder does not exist yet: nothing in it is overwritten
+        }
+        String name = viewpoints.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.equals(BatchRenderer.resultsFile(outDir).getFileName().toString().toLowerCase(Locale.ROOT))) {
+            return "the results file";
+        }
+        for (BatchRow row : rows) {
+            for (String suffix : dempano.batch.BatchIds.FILE_SUFFIXES) {
+                if (row.valid() && name.equals((row.id() + suffix).toLowerCase(Locale.ROOT))) {
+                    return "an output of row '" + row.id() + "'";
+                }
+            }
+        }
+        return null;
+    }
+
     @Override
     public Integer call() throws Exception {
         PrintStream err = System.err;
@@ -96,6 +123,12 @@ public final class BatchCommand implements Callable<Integer> {
             return 1;
         }
         List<BatchRow> rows = parsed.rows();
+        String overwritten = writtenOver(viewpoints, outDir, rows);
+        if (overwritten != null) {
+            err.println("dempano batch: cannot read and write " + viewpoints + ": it is " + overwritten
+                    + ", which the batch writes; move it or choose another --out-dir");
+            return 1;
+        }
         err.printf(Locale.ROOT, "dempano batch: %d rows (%d valid) from %s, DEM %s, into %s%n", rows.size(),
                 parsed.validCount(), viewpoints, dem.describe(), outDir);
         boolean bar = progress || System.console() != null;

@@ -276,6 +276,7 @@ public final class Main implements Callable<Integer> {
         // The output set is opened before rendering: an unwritable destination is found first, and
         // after any failure the previous outputs stay as they were.
         try (OutputSet set = OutputSet.open(out)) {
+            set.protect(summitsFile, "the summit list (--summits)");
             set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
             System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %.0f km, DEM %s%n", lat, lon, req.rangeMetres() / 1000, dem.describe());
             java.util.List<String> table = new java.util.ArrayList<>();

@@ -76,6 +76,7 @@ public final class OutputSet implements AutoCloseable {
     private final String base;
     private final Path staging;
     private final Map<String, Path> staged = new LinkedHashMap<>();
+    private final Map<Path, String> inputs = new LinkedHashMap<>();
     private boolean done;
 
     private OutputSet(String prefix, Path directory, String base, Path staging) {
@@ -170,7 +171,45 @@ public final class OutputSet implements AutoCloseable {
                 throw new IOException("cannot write " + target(s) + ": "
                         + (Files.isDirectory(t) ? "a folder" : "something that is not a file") + " of that name is in the way");
             }
+            String input = inputAt(t);
+            if (input != null) {
+                throw new IOException("cannot write " + target(s) + ": it is " + input + ", which this run reads;"
+                        + " choose another output prefix");
+            }
         }
+    }
+
+    /**
+     * Names a file the run reads (a photo, a summit list), which the set must neither overwrite nor, as a file of
+     * the previous set, delete: {@link #checkTargets} and {@link #write} refuse a target that is the same file
+     * (links followed). Call before writing.
+     *
+     * @param input the file; null: nothing
+     * @param what  what it is, for the message ("the photo IMAGE")
+     * @return this set
+     */
+    public OutputSet protect(Path input, String what) {
+        if (input != null) {
+            inputs.put(input, what);
+        }
+        return this;
+    }
+
+    /** What the protected input at {@code target} is, or null when it is none of them. */
+    private String inputAt(Path target) {
+        if (inputs.isEmpty() || !Files.exists(target)) {
+            return null;
+        }
+        for (Map.Entry<Path, String> in : inputs.entrySet()) {
+            try {
+                if (Files.exists(in.getKey()) && Files.isSameFile(target, in.getKey())) {
+                    return in.getValue() + " (" + in.getKey() + ")";
+                }
+            } catch (IOException e) {
+                // cannot tell: not the same file as far as this run can see
+            }
+        }
+        return null;
     }
 
     /**
@@ -219,7 +258,8 @@ public final class OutputSet implements AutoCloseable {
         checkTargets(staged.keySet().stream().map(n -> n.substring(base.length())).toList());
         IOException[] failure = new IOException[1];
         withLock(directory, base, () -> {
-            List<String> removals = previousFilesNotIn(directory, base, staged.keySet());
+            List<String> removals = new ArrayList<>(previousFilesNotIn(directory, base, staged.keySet()));
+            removals.removeIf(n -> inputAt(directory.resolve(n)) != null); // an input listed by the previous set stays
             Path markTmp = staging.resolve(COMMIT_MARK + ".part");
             Files.writeString(markTmp, String.join("\n", removals) + "\n", StandardCharsets.UTF_8);
             Files.move(markTmp, staging.resolve(COMMIT_MARK), StandardCopyOption.ATOMIC_MOVE);

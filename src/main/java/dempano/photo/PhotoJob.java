@@ -242,6 +242,7 @@ public final class PhotoJob {
         CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
         List<SummitSighting> sightings = in.summits() == null ? null : SummitProjector.project(rendered, in.summits());
         try (OutputSet set = OutputSet.open(in.outPrefix())) {
+            set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
             List<CameraWriter.ExtraFile> orientationFiles = orientationOverlay == null ? List.of() : List.of(
                     new CameraWriter.ExtraFile("-orientation.png", pngBytes(orientationOverlay)),
                     new CameraWriter.ExtraFile("-orientation.json", (orientationJson + "\n").getBytes(StandardCharsets.UTF_8)));
@@ -249,6 +250,15 @@ public final class PhotoJob {
                     new CameraWriter.Extras(photo, sightings, camera.provenance(), orientationFiles));
             set.commit();
             return new Result(camera, rendered, files);
+        }
+    }
+
+    /** The file a summit list was read from, as far as its source names one; null for none. */
+    private static Path sourceFile(SummitList summits) {
+        try {
+            return summits == null ? null : Path.of(summits.source());
+        } catch (java.nio.file.InvalidPathException e) {
+            return null;
         }
     }
 

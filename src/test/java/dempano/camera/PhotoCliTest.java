@@ -1,5 +1,6 @@
 package dempano.camera;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -167,6 +168,23 @@ class PhotoCliTest {
             assertFalse(Files.exists(Path.of(prefix + stale)), prefix + stale + " left from the run before");
         }
         assertTrue(Files.exists(Path.of(prefix + "-overlay.png")));
+    }
+
+    @Test
+    void anOutputPrefixThatWouldWriteOverThePhotoIsRefusedAndThePhotoKept() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path photo = tmp.resolve("f.png");
+        javax.imageio.ImageIO.write(new java.awt.image.BufferedImage(64, 48, java.awt.image.BufferedImage.TYPE_INT_RGB),
+                "png", photo.toFile());
+        byte[] before = Files.readAllBytes(photo);
+        Run r = run("photo", photo.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("f").toString(),
+                "--range-km", "20", "--lat", "46.5", "--lon", "8.5", "--offset-m", "0", "--heading-deg", "200",
+                "--pitch-deg", "-2", "--roll-deg", "0", "--hfov-deg", "50");
+        assertTrue(r.exit() != 0, r.err());
+        assertTrue(r.err().contains("cannot write " + photo + ": it is the photo"), r.err());
+        assertFalse(r.err().contains("\tat "), r.err());
+        assertArrayEquals(before, Files.readAllBytes(photo));
     }
 
     @Test

@@ -204,6 +204,20 @@ class BatchCommandTest {
         assertTrue(r[1].contains("dempano batch: cannot create the output folder " + file), r[1]);
     }
 
+    @Test
+    void aViewpointsFileTheBatchWouldWriteOverIsExitOneAndKept(@TempDir Path d) throws IOException {
+        Path out = Files.createDirectories(d.resolve("out"));
+        String text = "id,lat,lon\na,0.1,0.1\n";
+        for (String name : new String[] {"results.csv", "a.json", "a-distance.png"}) {
+            Path csv = Files.writeString(out.resolve(name), text);
+            String[] r = batch(csv, out);
+            assertEquals("1", r[0], r[1]);
+            assertTrue(r[1].contains("dempano batch: cannot read and write " + csv + ": it is "), r[1]);
+            assertEquals(text, Files.readString(csv), name);
+            Files.delete(csv);
+        }
+    }
+
     @ParameterizedTest(name = "[{index}] {0}")
     @CsvSource(delimiter = '|', value = {
             "--ppd -3                 | pixels per degree",

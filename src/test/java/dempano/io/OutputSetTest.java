@@ -77,6 +77,28 @@ class OutputSetTest {
     }
 
     @Test
+    void aFileTheRunReadsIsNeitherOverwrittenNorDeletedAsTheOldSets(@TempDir Path dir) throws IOException {
+        // The old set listed p-summits.csv; this run reads it as its summit list, and a photo named like its picture.
+        writeGeneration(dir, 1, OLD);
+        Path photo = Files.writeString(dir.resolve("p.png"), "the photo");
+        Path summits = dir.resolve("p-summits.csv");
+        Files.writeString(summits, "name,lat,lon");
+        try (OutputSet set = OutputSet.open(dir.resolve("p").toString())) {
+            set.protect(photo, "the photo").protect(summits, "the summit list");
+            IOException e = assertThrows(IOException.class, () -> set.checkTargets(List.of(".png")));
+            assertEquals("cannot write " + dir.resolve("p.png") + ": it is the photo (" + photo + "), which this run reads;"
+                    + " choose another output prefix", e.getMessage());
+            assertThrows(IOException.class, () -> set.write(".png", out -> out.write(1)));
+            set.write("-distance.npy", out -> out.write(2));
+            set.write(".json", out -> out.write("{\"files\": [\"p-distance.npy\", \"p.json\"]}".getBytes(StandardCharsets.UTF_8)));
+            set.commit();
+        }
+        assertEquals("the photo", Files.readString(photo));
+        assertEquals("name,lat,lon", Files.readString(summits), "listed by the old set, read by this one: kept");
+        assertFalse(Files.exists(dir.resolve("p-distance.png")), "the old set's other file is gone");
+    }
+
+    @Test
     void aFailureWhileStagingLeavesTheOldSetAndNothingElse(@TempDir Path dir) throws IOException {
         writeGeneration(dir, 1, OLD);
         try (OutputSet set = OutputSet.open(dir.resolve("p").toString())) {
