@@ -62,14 +62,14 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
     public PanoramaRequest {
         TileSelection.checkCoordinates(latDeg, lonDeg);
         pixelsPerDegree = dempano.panorama.PanoramaGeometry.checkedPixelsPerDegree(pixelsPerDegree);
-        if (!Double.isFinite(offsetMetres)) {
-            throw new IllegalArgumentException("offset must be a finite number of metres, got " + offsetMetres);
+        if (!(Math.abs(offsetMetres) < 1e6)) {
+            throw new IllegalArgumentException("offset must be a number of metres within ±1e6, got " + offsetMetres);
         }
         if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
             throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), got " + altitudeMetres);
         }
         if (!(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
-            throw new IllegalArgumentException("eye height must be ≥ 0 metres, got " + eyeHeightMetres);
+            throw new IllegalArgumentException("eye height must be a number of metres in [0, 1e6), got " + eyeHeightMetres);
         }
         if (!(rangeMetres >= 100 && rangeMetres <= TileSelection.MAX_RANGE_METRES)) {
             throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000

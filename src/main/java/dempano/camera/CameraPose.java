@@ -32,7 +32,7 @@ public record CameraPose(double latDeg, double lonDeg, double offsetMetres, doub
                     + altitudeMetres);
         }
         if (!(cameraHeightMetres >= 0 && cameraHeightMetres < 1e6)) {
-            throw new IllegalArgumentException("camera height must be ≥ 0 metres, got " + cameraHeightMetres);
+            throw new IllegalArgumentException("camera height must be a number of metres in [0, 1e6), got " + cameraHeightMetres);
         }
         if (orientation == null) {
             throw new IllegalArgumentException("camera orientation must be given");

@@ -5,7 +5,6 @@ import com.adobe.internal.xmp.XMPMeta;
 import com.adobe.internal.xmp.properties.XMPProperty;
 import com.drew.imaging.ImageMetadataReader;
 import com.drew.imaging.ImageProcessingException;
-import com.drew.lang.GeoLocation;
 import com.drew.lang.Rational;
 import com.drew.metadata.Directory;
 import com.drew.metadata.Metadata;
@@ -165,11 +164,14 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         DirectionReference dirRef = DirectionReference.NOT_GIVEN;
         GpsDirectory gps = metadata.getFirstDirectoryOfType(GpsDirectory.class);
         if (gps != null) {
-            GeoLocation location = gps.getGeoLocation();
-            if (location != null && !location.isZero() && Double.isFinite(location.getLatitude())
-                    && Double.isFinite(location.getLongitude())) {
-                lat = location.getLatitude();
-                lon = location.getLongitude();
+            // Read here, not by GpsDirectory.getGeoLocation: it takes 0/0 for 0 and 99 minutes for 1.65°.
+            double la = degrees(gps.getRationalArray(GpsDirectory.TAG_LATITUDE), gps.getString(GpsDirectory.TAG_LATITUDE_REF),
+                    "GPSLatitude", 'N', 'S', 90, problems);
+            double lo = degrees(gps.getRationalArray(GpsDirectory.TAG_LONGITUDE), gps.getString(GpsDirectory.TAG_LONGITUDE_REF),
+                    "GPSLongitude", 'E', 'W', 180, problems);
+            if (Double.isFinite(la) && Double.isFinite(lo) && !(la == 0 && lo == 0)) { // 0, 0: a placeholder
+                lat = la;
+                lon = lo;
             }
             alt = value(gps.getRational(GpsDirectory.TAG_ALTITUDE));
             Integer altRef = gps.getInteger(GpsDirectory.TAG_ALTITUDE_REF);
@@ -223,6 +225,47 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 sensorWidth, yaw, pitch, roll, attitudeSource, problems);
     }
 
+    /**
+     * An EXIF GPS latitude or longitude from its three rationals (degrees, minutes, seconds) and its reference;
+     * NaN, with a problem said, where it is absent in part, has a zero denominator, minutes or seconds outside
+     * [0, 60), or exceeds {@code maxDeg}; NaN silently where the tag is absent.
+     */
+    static double degrees(Rational[] dms, String ref, String tag, char positive, char negative, double maxDeg,
+                          List<String> problems) {
+        if (dms == null && ref == null) {
+            return Double.NaN;
+        }
+        if (dms == null || dms.length != 3) {
+            problems.add(tag + " is not three numbers (degrees, minutes, seconds): not used");
+            return Double.NaN;
+        }
+        double[] v = new double[3];
+        for (int i = 0; i < 3; i++) {
+            if (dms[i] == null || dms[i].getDenominator() == 0) {
+                problems.add(tag + " " + java.util.Arrays.toString(dms) + " has a zero denominator: not used");
+                return Double.NaN;
+            }
+            v[i] = dms[i].doubleValue();
+        }
+        if (!(v[0] >= 0 && v[1] >= 0 && v[1] < 60 && v[2] >= 0 && v[2] < 60)) {
+            problems.add(tag + " " + java.util.Arrays.toString(dms) + " is not degrees, minutes < 60 and seconds < 60:"
+                    + " not used");
+            return Double.NaN;
+        }
+        double deg = v[0] + v[1] / 60 + v[2] / 3600;
+        String r = ref == null ? "" : ref.trim().toUpperCase(Locale.ROOT);
+        if (!(r.equals(String.valueOf(positive)) || r.equals(String.valueOf(negative)))) {
+            problems.add(tag + "Ref \"" + (ref == null ? "" : ref.trim()) + "\" is neither " + positive + " nor " + negative
+                    + ": the position is not used");
+            return Double.NaN;
+        }
+        if (!(deg <= maxDeg)) {
+            problems.add(tag + " " + deg + "° is beyond " + (int) maxDeg + "°: not used");
+            return Double.NaN;
+        }
+        return r.equals(String.valueOf(negative)) ? -deg : deg;
+    }
+
     private static double value(Rational r) {
         if (r == null || r.getDenominator() == 0) {
             return Double.NaN;
@@ -265,6 +308,11 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return Math.max(pw / xRes, ph / yRes) * unitMm;
     }
 
+    /** A plain decimal number (as XMP writes them): no hexadecimal, NaN, Infinity or type suffixes. */
+    private static final java.util.regex.Pattern PLAIN_DECIMAL =
+            java.util.regex.Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+
+    /** An XMP angle, degrees: NaN where absent, or (with a problem said) not a number or beyond a full turn (pitch ±90°, roll ±180°). */
     private static double xmpDouble(XMPMeta meta, String namespace, String property, List<String> problems) {
         try {
             XMPProperty p = meta.getProperty(namespace, property);
@@ -272,13 +320,14 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 return Double.NaN;
             }
             String text = p.getValue().trim();
-            try {
+            double limit = property.contains("Pitch") ? 90 : property.contains("Roll") ? 180 : 360;
+            if (PLAIN_DECIMAL.matcher(text).matches()) {
                 double v = Double.parseDouble(text);
-                if (Double.isFinite(v)) {
+                if (Math.abs(v) <= limit) {
                     return v;
                 }
-            } catch (NumberFormatException e) {
-                // reported below
+                problems.add("XMP " + property + " \"" + text + "\" is beyond ±" + (int) limit + "°: not used");
+                return Double.NaN;
             }
             problems.add("XMP " + property + " \"" + text + "\" is not a number");
             return Double.NaN;
@@ -398,7 +447,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         double lat = given(o.latDeg()) ? o.latDeg() : latDeg;
         double lon = given(o.lonDeg()) ? o.lonDeg() : lonDeg;
         if (!given(lat) || !given(lon)) {
-            missing.add("no GPS position in the EXIF: give " + PhotoOverrides.LAT + " and " + PhotoOverrides.LON);
+            String gpsProblem = problems.stream().filter(p -> p.startsWith("GPSLatitude") || p.startsWith("GPSLongitude"))
+                    .findFirst().orElse(null);
+            missing.add((gpsProblem == null ? "no GPS position in the EXIF" : "the EXIF GPS position is unusable ("
+                    + gpsProblem + ")") + ": give " + PhotoOverrides.LAT + " and " + PhotoOverrides.LON);
         } else {
             provenance.add("position " + num(lat) + ", " + num(lon) + " from "
                     + (given(o.latDeg()) && given(o.lonDeg()) ? PhotoOverrides.LAT + "/" + PhotoOverrides.LON

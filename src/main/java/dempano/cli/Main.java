@@ -202,6 +202,20 @@ public final class Main implements Callable<Integer> {
         return cl;
     }
 
+    /**
+     * An optional number flag: NaN where not given; a NaN given is refused (NaN means "not given" inside, so
+     * {@code --altitude-m NaN} would silently be no altitude).
+     */
+    static double given(String flag, Double v) {
+        if (v == null) {
+            return Double.NaN;
+        }
+        if (Double.isNaN(v)) {
+            throw new IllegalArgumentException(flag + " must be a number, got NaN");
+        }
+        return v;
+    }
+
     /** The way out of an out-of-memory failure, with the heap size in use. */
     static String outOfMemoryMessage(OutOfMemoryError e) {
         return String.format(Locale.ROOT, "out of memory (%s; Java heap limit %.1f GB): lower --ppd, --elevation-range "
@@ -225,9 +239,9 @@ public final class Main implements Callable<Integer> {
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         Set<Layer> wanted = panorama.layers();
         PanoramaRequest req = panorama.applyTo(PanoramaRequest.at(lat, lon), demo ? 60_000 : PanoramaRequest.DEFAULT_RANGE_METRES)
-                .withAltitudeMetres(altitudeMetres == null ? Double.NaN : altitudeMetres)
-                .withSnapToSummitMetres(snapToSummitMetres == null ? Double.NaN : snapToSummitMetres)
-                .withClearViewMetres(clearViewMetres == null ? Double.NaN : clearViewMetres);
+                .withAltitudeMetres(given("--altitude-m", altitudeMetres))
+                .withSnapToSummitMetres(given("--snap-to-summit-m", snapToSummitMetres))
+                .withClearViewMetres(given("--clear-view-m", clearViewMetres));
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
         String out = context.resolve(this.out);
         Path outParent = Path.of(out).toAbsolutePath().getParent();
@@ -237,7 +251,7 @@ public final class Main implements Callable<Integer> {
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(dirs, panorama.demFill(),
                 w -> System.err.println("  warning: " + w));
         dempano.io.SummitWriter.LabelOptions labelOptions = new dempano.io.SummitWriter.LabelOptions(maxLabels,
-                labelSpacingPx == null ? Double.NaN : labelSpacingPx, switch (labelOrder.toLowerCase(Locale.ROOT)) {
+                given("--label-spacing-px", labelSpacingPx), switch (labelOrder.toLowerCase(Locale.ROOT)) {
                     case "height" -> dempano.io.SummitWriter.LabelOrder.HEIGHT;
                     case "angle" -> dempano.io.SummitWriter.LabelOrder.ANGLE;
                     case "distance" -> dempano.io.SummitWriter.LabelOrder.DISTANCE;

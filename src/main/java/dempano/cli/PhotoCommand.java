@@ -153,6 +153,15 @@ public final class PhotoCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** An angle within ±{@code limitDeg} degrees (a heading of 1e308 is a typo, not a direction). */
+    private static double within(String flag, Double v, double limitDeg) {
+        finite(flag, v);
+        if (!(Math.abs(v) <= limitDeg)) {
+            throw new IllegalArgumentException(flag + " must be within ±" + (int) limitDeg + " degrees, got " + v);
+        }
+        return v;
+    }
+
     private static double finite(String flag, Double v) {
         if (!Double.isFinite(v)) {
             throw new IllegalArgumentException(flag + " must be a finite number, got " + v);
@@ -174,10 +183,10 @@ public final class PhotoCommand implements Callable<Integer> {
         o = altitudeMetres == null ? o : o.withAltitudeMetres(finite(PhotoOverrides.ALTITUDE, altitudeMetres));
         o = offsetMetres == null ? o : o.withOffsetMetres(finite(PhotoOverrides.OFFSET, offsetMetres));
         o = cameraHeightMetres == null ? o : o.withCameraHeightMetres(finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres));
-        o = headingDeg == null ? o : o.withHeadingDeg(finite(PhotoOverrides.HEADING, headingDeg));
-        o = declinationDeg == null ? o : o.withDeclinationDeg(finite(PhotoOverrides.DECLINATION, declinationDeg));
-        o = pitchDeg == null ? o : o.withPitchDeg(finite(PhotoOverrides.PITCH, pitchDeg));
-        o = rollDeg == null ? o : o.withRollDeg(finite(PhotoOverrides.ROLL, rollDeg));
+        o = headingDeg == null ? o : o.withHeadingDeg(within(PhotoOverrides.HEADING, headingDeg, 360));
+        o = declinationDeg == null ? o : o.withDeclinationDeg(within(PhotoOverrides.DECLINATION, declinationDeg, 180));
+        o = pitchDeg == null ? o : o.withPitchDeg(within(PhotoOverrides.PITCH, pitchDeg, 90));
+        o = rollDeg == null ? o : o.withRollDeg(within(PhotoOverrides.ROLL, rollDeg, 180));
         o = focalMm == null ? o : o.withFocalLengthMm(finite(PhotoOverrides.FOCAL, focalMm));
         o = sensorWidthMm == null ? o : o.withSensorWidthMm(finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm));
         o = focal35Mm == null ? o : o.withFocal35mmMm(finite(PhotoOverrides.FOCAL35, focal35Mm));

@@ -60,7 +60,7 @@ public final class SummitWriter {
                 throw new IllegalArgumentException("the number of labels must be 0 (no limit) or more, got " + maxLabels);
             }
             if (!Double.isNaN(spacingPx) && !(spacingPx >= 0 && spacingPx < 1e6)) {
-                throw new IllegalArgumentException("label spacing must be a number of pixels ≥ 0, got " + spacingPx);
+                throw new IllegalArgumentException("label spacing must be a number of pixels in [0, 1e6), got " + spacingPx);
             }
         }
     }

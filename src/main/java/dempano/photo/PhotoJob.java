@@ -201,6 +201,13 @@ public final class PhotoJob {
                                 .withAltitudeMetres(camera.pose().altitudeMetres())
                                 .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
                         photo, camera, in.ranges().withHeadingRangeDeg(headingRangeDeg));
+            } catch (dempano.InsufficientMemoryException e) {
+                // The panorama matched against has a fixed grid: --ppd and --elevation-range are not the photo's to lower.
+                throw new dempano.InsufficientMemoryException("the 360° panorama the photo is matched against (to estimate "
+                        + String.join(", ", open.names()) + ") " + e.getMessage().replaceFirst("^this panorama ", "")
+                        .replaceFirst(": lower the pixels per degree .*?, or give Java more memory", ": give Java more memory")
+                        + ", or give them (" + PhotoOverrides.HEADING + ", " + PhotoOverrides.PITCH + ", " + PhotoOverrides.ROLL
+                        + ", " + PhotoOverrides.HFOV + ") so that nothing is estimated", e.estimate());
             } catch (IllegalArgumentException e) {
                 List<String> missing = meta.missing(given);
                 throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())

@@ -48,7 +48,7 @@ class ViewpointCsvTest {
             "a,,8,,,,,                                    | latitude is empty",
             "a,46,8,abc,,,,                               | altitude 'abc' is not a decimal number",
             "a,46,8,,12m,,,                               | offset '12m' is not a decimal number",
-            "a,46,8,,,-1,,                                | eye height must be ≥ 0 metres",
+            "a,46,8,,,-1,,                                | eye height must be a number of metres in [0, 1e6)",
             "a,46,8,,,,0.01,                              | range must be between 0.1 and",
             "a,46,8,,,,,0                                 | pixels per degree",
             "a,46,8,,,,,1000                              | pixels per degree",

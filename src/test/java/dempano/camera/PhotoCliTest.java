@@ -233,6 +233,10 @@ class PhotoCliTest {
             {"--hfov-range-deg", "40", "--hfov-range-deg must be MIN,MAX (two finite numbers)"},
             {"--hfov-range-deg", "40,NaN", "--hfov-range-deg must be MIN,MAX (two finite numbers)"},
             {"--focal35-range-mm", "0,70", "--focal35-range-mm must be MIN,MAX with 0 < MIN"},
+            {"--heading-deg", "1e308", "--heading-deg must be within ±360 degrees"},
+            {"--roll-deg", "181", "--roll-deg must be within ±180 degrees"},
+            {"--pitch-deg", "-91", "--pitch-deg must be within ±90 degrees"},
+            {"--declination-deg", "200", "--declination-deg must be within ±180 degrees"},
         };
         for (String[] c : cases) {
             Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("y").toString(), c[0], c[1]);

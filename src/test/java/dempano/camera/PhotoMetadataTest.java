@@ -190,6 +190,15 @@ class PhotoMetadataTest {
                 .write(dir, "bad-xmp.jpg", 80, 60));
         assertTrue(Double.isNaN(bad.xmpPitchDeg()));
         assertTrue(bad.problems().stream().anyMatch(s -> s.contains("minus ten")), bad.problems().toString());
+        // Beyond a turn (pitch ±90°, roll ±180°), or not a plain decimal: not used, and said.
+        PhotoMetadata huge = PhotoMetadata.read(new ExifJpeg().xmp("drone-dji:GimbalYawDegree=\"1e308\""
+                + " drone-dji:GimbalPitchDegree=\"0x1p6\" drone-dji:GimbalRollDegree=\"-180\"").write(dir, "huge.jpg", 80, 60));
+        assertTrue(Double.isNaN(huge.xmpYawDeg()) && Double.isNaN(huge.xmpPitchDeg()), huge.toString());
+        assertEquals(-180, huge.xmpRollDeg(), 0);
+        assertTrue(huge.problems().stream().anyMatch(s -> s.contains("GimbalYawDegree \"1e308\" is beyond ±360°")),
+                huge.problems().toString());
+        assertTrue(huge.problems().stream().anyMatch(s -> s.contains("0x1p6") && s.contains("is not a number")),
+                huge.problems().toString());
     }
 
     @Test
@@ -292,5 +301,42 @@ class PhotoMetadataTest {
         }
         assertTrue(assertThrows(PhotoMetadataException.class, () -> PhotoMetadata.read(dir.resolve("absent.jpg")))
                 .getMessage().contains("no such file"));
+    }
+
+    /** {degrees, minutes, seconds as n/d pairs ("n/d n/d n/d"), reference, expected degrees or NaN, problem or ""}. */
+    static final String[][] GPS_DMS = {
+        {"46/1 30/1 0/1", "N", "46.5", ""},
+        {"46/1 30/1 0/1", "S", "-46.5", ""},
+        {"8/1 15/1 36/1", "E", "8.26", ""},
+        {"8/1 15/1 36/1", "W", "-8.26", ""},
+        {"4650/100 0/1 0/1", "N", "46.5", ""},
+        {"0/0 0/0 0/0", "N", "NaN", "has a zero denominator"},
+        {"44/0 0/1 0/1", "N", "NaN", "has a zero denominator"},
+        {"44/1 99/1 0/1", "N", "NaN", "minutes < 60"},
+        {"44/1 0/1 60/1", "N", "NaN", "seconds < 60"},
+        {"-44/1 0/1 0/1", "N", "NaN", "minutes < 60"},
+        {"95/1 0/1 0/1", "N", "NaN", "beyond 90°"},
+        {"46/1 30/1 0/1", "X", "NaN", "is neither N nor S"},
+        {"46/1 30/1 0/1", null, "NaN", "is neither N nor S"},
+    };
+
+    @Test
+    void gpsDegreesMinutesSecondsAreReadStrictly() {
+        for (String[] row : GPS_DMS) {
+            com.drew.lang.Rational[] dms = Arrays.stream(row[0].split(" ")).map(t -> t.split("/"))
+                    .map(nd -> new com.drew.lang.Rational(Long.parseLong(nd[0]), Long.parseLong(nd[1])))
+                    .toArray(com.drew.lang.Rational[]::new);
+            boolean lat = row[1] == null || "NSX".contains(row[1]);
+            List<String> problems = new java.util.ArrayList<>();
+            double v = PhotoMetadata.degrees(dms, row[1], lat ? "GPSLatitude" : "GPSLongitude", lat ? 'N' : 'E',
+                    lat ? 'S' : 'W', lat ? 90 : 180, problems);
+            String what = Arrays.toString(row) + " → " + v + " " + problems;
+            assertEquals(Double.parseDouble(row[2]), v, 1e-12, what);
+            assertEquals(row[3].isEmpty(), problems.isEmpty(), what);
+            assertTrue(problems.stream().allMatch(p -> p.contains(row[3])), what);
+        }
+        // Absent: NaN, nothing said.
+        List<String> none = new java.util.ArrayList<>();
+        assertTrue(Double.isNaN(PhotoMetadata.degrees(null, null, "GPSLatitude", 'N', 'S', 90, none)) && none.isEmpty());
     }
 }

@@ -47,6 +47,12 @@ class MainTest {
             "--lat 46 --lon 8 --dem-dir . --no-colour --no-distance|nothing to render",
             "--lat 46 --lon 8 --dem-dir . --no-distance --layers elevation|need the distance map",
             "--lat 46 --lon 8 --dem-dir . --no-distance --summits peaks.txt|--summits needs the distance map",
+            "--lat 46 --lon 8 --dem-dir . --altitude-m NaN|--altitude-m must be a number, got NaN",
+            "--lat 46 --lon 8 --dem-dir . --clear-view-m NaN|--clear-view-m must be a number, got NaN",
+            "--lat 46 --lon 8 --dem-dir . --snap-to-summit-m NaN|--snap-to-summit-m must be a number, got NaN",
+            "--lat 46 --lon 8 --dem-dir . --label-spacing-px NaN|--label-spacing-px must be a number, got NaN",
+            "--lat 46 --lon 8 --dem-dir . --offset-m 1e300|offset must be a number of metres within ±1e6",
+            "--lat 46 --lon 8 --dem-dir . --eye-height-m 1e9|eye height must be a number of metres in [0, 1e6)",
     })
     void badArgumentsExitTwoWithAMessage(String args, String expected) {
         String[] r = run(args.split(" "));
