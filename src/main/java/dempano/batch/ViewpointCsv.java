@@ -79,8 +79,12 @@ public final class ViewpointCsv {
             FOCAL35_MIN_MM, FOCAL35_MAX_MM);
 
     /** A photo row's optional column: what it is called in messages, and the override it makes. */
+    /** A photo row's override column; {@code limit}: largest magnitude accepted (an angle's), +∞ for none. */
     private record PhotoColumn(String column, String what,
-                               java.util.function.BiFunction<PhotoOverrides, Double, PhotoOverrides> override) {
+                               java.util.function.BiFunction<PhotoOverrides, Double, PhotoOverrides> override, double limit) {
+        PhotoColumn(String column, String what, java.util.function.BiFunction<PhotoOverrides, Double, PhotoOverrides> override) {
+            this(column, what, override, Double.POSITIVE_INFINITY);
+        }
     }
 
     /** The columns a photo row may override its photo's metadata with, in the order they are applied. */
@@ -88,9 +92,9 @@ public final class ViewpointCsv {
             new PhotoColumn(ALTITUDE_M, "altitude", PhotoOverrides::withAltitudeMetres),
             new PhotoColumn(OFFSET_M, "offset", PhotoOverrides::withOffsetMetres),
             new PhotoColumn(EYE_HEIGHT_M, "eye height", PhotoOverrides::withCameraHeightMetres),
-            new PhotoColumn(HEADING_DEG, "heading", PhotoOverrides::withHeadingDeg),
-            new PhotoColumn(PITCH_DEG, "pitch", PhotoOverrides::withPitchDeg),
-            new PhotoColumn(ROLL_DEG, "roll", PhotoOverrides::withRollDeg),
+            new PhotoColumn(HEADING_DEG, "heading", PhotoOverrides::withHeadingDeg, 360),
+            new PhotoColumn(PITCH_DEG, "pitch", PhotoOverrides::withPitchDeg, 90),
+            new PhotoColumn(ROLL_DEG, "roll", PhotoOverrides::withRollDeg, 180),
             new PhotoColumn(HFOV_DEG, "horizontal field of view", PhotoOverrides::withHorizontalFovDeg),
             new PhotoColumn(FOCAL35_MM, "35 mm-equivalent focal length", PhotoOverrides::withFocal35mmMm));
 
@@ -304,6 +308,9 @@ public final class ViewpointCsv {
         }
         for (PhotoColumn c : PHOTO_OVERRIDES) {
             double v = number(f, columns, c.column(), c.what(), Double.NaN);
+            if (Math.abs(v) > c.limit()) {
+                throw new IllegalArgumentException(c.column() + " must be within ±" + (int) c.limit() + " degrees, got " + v);
+            }
             if (!Double.isNaN(v)) {
                 o = c.override().apply(o, v);
             }

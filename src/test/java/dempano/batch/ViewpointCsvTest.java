@@ -106,6 +106,13 @@ class ViewpointCsvTest {
         assertTrue(rows.get(4).error().contains("--hfov-range-deg must be MIN,MAX"), rows.get(4).error());
         assertTrue(rows.get(5).error().contains("not both"), rows.get(5).error());
         assertTrue(rows.get(6).error().contains("--heading-range-deg must be in"), rows.get(6).error());
+        // Angles beyond a turn are that row's error.
+        List<BatchRow> angles = parse("id,image,heading_deg,pitch_deg,roll_deg\nh,a.jpg,1e300,,\np,b.jpg,,-91,\n"
+                + "r,c.jpg,,,180.5\nok,d.jpg,-360,90,-180\n").rows();
+        assertEquals("line 2: heading_deg must be within ±360 degrees, got 1.0E300", angles.get(0).error());
+        assertEquals("line 3: pitch_deg must be within ±90 degrees, got -91.0", angles.get(1).error());
+        assertEquals("line 4: roll_deg must be within ±180 degrees, got 180.5", angles.get(2).error());
+        assertTrue(angles.get(3).valid(), angles.get(3).error());
         // A viewpoint (no image) may not fill them.
         BatchRow panorama = parse("id,lat,lon,image,hfov_min_deg,hfov_max_deg\np,46,8,,40,60\n").rows().get(0);
         assertFalse(panorama.valid());
