@@ -118,6 +118,18 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return message == null || message.isBlank() ? "unknown format" : message;
     }
 
+    /** The first {directory class, width tag, height tag} of the list that the metadata has both of; {0, 0} if none. */
+    @SuppressWarnings("unchecked")
+    private static int[] firstSize(Metadata metadata, Object[]... candidates) {
+        for (Object[] c : candidates) {
+            Directory d = metadata.getFirstDirectoryOfType((Class<? extends Directory>) c[0]);
+            if (d != null && d.getInteger((Integer) c[1]) != null && d.getInteger((Integer) c[2]) != null) {
+                return new int[] {d.getInteger((Integer) c[1]), d.getInteger((Integer) c[2])};
+            }
+        }
+        return new int[] {0, 0};
+    }
+
     /** The values in already-read metadata; {@code source} names the file in messages. */
     public static PhotoMetadata of(Metadata metadata, String source) {
         List<String> problems = new ArrayList<>();
@@ -142,6 +154,18 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 && exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT) != null) {
             storedWidth = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH);
             storedHeight = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT);
+        } else {
+            // Other formats' headers (GIF, BMP, WebP; a TIFF's first image): the size their pixels will have.
+            int[] size = firstSize(metadata,
+                    new Object[] {com.drew.metadata.gif.GifHeaderDirectory.class, com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_WIDTH,
+                            com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_HEIGHT},
+                    new Object[] {com.drew.metadata.bmp.BmpHeaderDirectory.class, com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_WIDTH,
+                            com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_HEIGHT},
+                    new Object[] {com.drew.metadata.webp.WebpDirectory.class, com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_WIDTH,
+                            com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_HEIGHT},
+                    new Object[] {ExifIFD0Directory.class, ExifIFD0Directory.TAG_IMAGE_WIDTH, ExifIFD0Directory.TAG_IMAGE_HEIGHT});
+            storedWidth = size[0];
+            storedHeight = size[1];
         }
         if (storedWidth < 0 || storedHeight < 0) {
             storedWidth = storedHeight = 0;

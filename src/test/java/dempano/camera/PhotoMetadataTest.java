@@ -339,4 +339,17 @@ class PhotoMetadataTest {
         List<String> none = new java.util.ArrayList<>();
         assertTrue(Double.isNaN(PhotoMetadata.degrees(null, null, "GPSLatitude", 'N', 'S', 90, none)) && none.isEmpty());
     }
+
+    @Test
+    void gifBmpAndTiffPhotosHaveTheirSize(@TempDir Path dir) throws Exception {
+        // Formats without EXIF (before: "corrupt or unsupported photograph: no image size found").
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(123, 45, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        for (String format : new String[] {"gif", "bmp", "tiff"}) {
+            Path f = dir.resolve("p." + format);
+            assertTrue(javax.imageio.ImageIO.write(img, format, f.toFile()), format);
+            PhotoMetadata m = PhotoMetadata.read(f);
+            assertEquals(123, m.widthPx(), format);
+            assertEquals(45, m.heightPx(), format);
+        }
+    }
 }
