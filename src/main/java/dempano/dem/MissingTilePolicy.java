@@ -34,21 +34,28 @@ public enum MissingTilePolicy {
             return;
         }
         String where = mosaic.sourceDescription();
+        // Tiles there but without one valid sample count as missing: say so, not that they are absent.
+        List<String> allVoid = mosaic.warnings().stream().filter(w -> w.contains(ENTIRELY_VOID)).toList();
         if (mosaic.tilesUsed().isEmpty()) {
             throw new DemException("no DEM data around " + latDeg + ", " + lonDeg + ": none of the tiles needed within range "
-                    + mosaic.tilesMissing() + " is in " + where
-                    + " (wrong DEM folder, or open sea?); add the tiles, or give --missing-tiles sea to render sea level");
+                    + mosaic.tilesMissing() + (allVoid.isEmpty() ? " is in " + where + " (wrong DEM folder, or open sea?)"
+                    : " has data in " + where + " (" + String.join("; ", allVoid) + ")")
+                    + "; add the tiles, or give --missing-tiles sea to render sea level");
         }
         if (Double.isNaN(altitudeMetres)) {
             List<TileId> under = tilesUnder(latDeg, lonDeg);
             if (mosaic.tilesMissing().containsAll(under)) {
                 throw new DemException("tile " + (under.size() == 1 ? under.get(0) : under.toString())
-                        + " under the viewpoint " + latDeg + ", " + lonDeg + " is not in " + where
+                        + " under the viewpoint " + latDeg + ", " + lonDeg + (allVoid.isEmpty() ? " is not in " + where
+                        : " has no data in " + where + " (" + String.join("; ", allVoid) + ")")
                         + ": the eye would stand on sea level (0 m); add the tile, give the eye's altitude with "
                         + "--altitude-m, or --missing-tiles sea if the viewpoint is at sea");
             }
         }
     }
+
+    /** How {@link Mosaic} words the warning for a tile with no valid sample, which then counts as missing. */
+    static final String ENTIRELY_VOID = "has no valid sample at all";
 
     /** The tiles whose closed squares hold a point (2 or 4 on an edge or corner). */
     private static List<TileId> tilesUnder(double latDeg, double lonDeg) {

@@ -118,7 +118,7 @@ public final class Mosaic {
                 TileId id = sel.tile(r, c);
                 HgtTile t = source.tile(id).orElse(null);
                 if (t != null && t.entirelyVoid()) {
-                    warnings.add(id + " (" + t.source() + ") has no valid sample at all: treated as missing");
+                    warnings.add(id + " (" + t.source() + ") " + MissingTilePolicy.ENTIRELY_VOID + ": treated as missing");
                     t = null;
                 }
                 if (t == null) {

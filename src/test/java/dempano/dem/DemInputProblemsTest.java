@@ -128,6 +128,14 @@ class DemInputProblemsTest {
             Files.write(d.resolve("N43E007.hgt.zip"), zip);
         }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
                 List.of("{dir}/N43E007.hgt.zip", "corrupt zip", "checksum of N43E007.hgt does not match")));
+        t.add(Arguments.of("a tile without one valid sample", (Setup) d -> {
+            byte[] voids = new byte[2 * 1201 * 1201];
+            for (int i = 0; i < voids.length; i += 2) {
+                voids[i] = (byte) 0x80; // -32768, big-endian
+            }
+            Files.write(d.resolve("N43E007.hgt"), voids);
+        }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
+                List.of("none of the tiles needed within range [N43E007] has data in", "{dir}/N43E007.hgt) has no valid sample at all")));
         t.add(Arguments.of("zip without .hgt", (Setup) d -> HgtTestFiles.zip(d, "N43E007.hgt.zip", "readme.txt",
                 Files.write(d.resolve("readme.txt"), new byte[] {'x'}).toString()),
                 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true, List.of("{dir}/N43E007.hgt.zip", "zip holds no .hgt file")));
