@@ -34,6 +34,14 @@ public final class IoMessages {
             return fs.getReason().toLowerCase(java.util.Locale.ROOT); // e.g. "no space left on device"
         }
         String m = e.getMessage();
-        return m == null || m.isBlank() ? e.getClass().getSimpleName() : m;
+        m = m == null || m.isBlank() ? e.getClass().getSimpleName() : m;
+        // An encoder's own words ("I/O error writing PNG file!") hide the stream's: add the cause's reason.
+        if (e.getCause() instanceof IOException cause && cause != e) {
+            String why = reason(cause);
+            if (!m.contains(why)) {
+                m = m.replaceFirst("[!.]$", "") + ": " + why;
+            }
+        }
+        return m;
     }
 }
