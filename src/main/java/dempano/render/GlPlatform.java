@@ -78,6 +78,12 @@ final class GlPlatform {
         Logger w = Logger.getLogger(LwjglWindow.class.getName());
         w.setLevel(Level.OFF);
         QUIETED.add(w);
+        // "SEVERE: Buffer cannot be destroyed" when a released mesh's native memory cannot be freed at once (seen
+        // with a one-pixel GeoTIFF on a successful run): the garbage collector frees it instead; nothing is wrong.
+        // (ReflectionAllocator logs through BufferUtils' logger; only that message is dropped.)
+        Logger buffers = Logger.getLogger(com.jme3.util.BufferUtils.class.getName());
+        buffers.setFilter(r -> r.getMessage() == null || !r.getMessage().startsWith("Buffer cannot be destroyed"));
+        QUIETED.add(buffers);
     }
 
     /**
