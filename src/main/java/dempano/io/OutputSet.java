@@ -68,6 +68,34 @@ public final class OutputSet implements AutoCloseable {
         }
     }
 
+    private static final java.util.concurrent.atomic.AtomicBoolean CLEANUP_HOOKED = new java.util.concurrent.atomic.AtomicBoolean();
+
+    /**
+     * Removes this JVM's staging folders that were never committed (run at exit, Ctrl-C included): the previous sets
+     * stay as they were, and no hidden folder of half-written files is left for the next run of the prefix to find. A
+     * folder whose commit has begun is left alone under the prefix's lock (the commit finishes first, or the next
+     * run finishes it).
+     */
+    static void discardUncommitted() {
+        for (Path staging : List.copyOf(ACTIVE)) {
+            String name = staging.getFileName().toString();
+            int infix = name.lastIndexOf(STAGING_INFIX);
+            if (infix <= 1) {
+                continue;
+            }
+            try {
+                withLock(staging.getParent(), name.substring(1, infix), () -> {
+                    if (ACTIVE.contains(staging) && !Files.exists(staging.resolve(COMMIT_MARK))) {
+                        deleteTree(staging);
+                        ACTIVE.remove(staging);
+                    }
+                });
+            } catch (IOException | RuntimeException e) {
+                // left for the next run of the prefix, which removes it
+            }
+        }
+    }
+
     /** Test hook: told each step of a commit ("staged NAME", "marked", "moved NAME"); a no-op otherwise. */
     static volatile Consumer<String> checkpoint = step -> { };
 
@@ -121,6 +149,9 @@ public final class OutputSet implements AutoCloseable {
                     + IoMessages.reason(e) + ")", e);
         }
         ACTIVE.add(staging);
+        if (CLEANUP_HOOKED.compareAndSet(false, true)) {
+            Runtime.getRuntime().addShutdownHook(new Thread(OutputSet::discardUncommitted, "dempano-output-cleanup"));
+        }
         return new OutputSet(prefix, dir, base, staging);
     }
 

@@ -27,8 +27,12 @@ class OutputSetKillTest {
     /** The child: writes generation 2 over generation 1, halting the JVM at the named step. */
     public static void main(String[] args) throws IOException {
         String haltAt = args[1];
+        boolean exit = args.length > 2 && args[2].equals("exit"); // an orderly exit (Ctrl-C): shutdown hooks run
         OutputSet.checkpoint = step -> {
             if (step.equals(haltAt)) {
+                if (exit) {
+                    System.exit(130);
+                }
                 Runtime.getRuntime().halt(137);
             }
         };
@@ -61,6 +65,22 @@ class OutputSetKillTest {
         OutputSet.open(dir.resolve("p").toString()).close(); // the next run with this prefix
         assertEquals(committed ? OutputSetTest.expectedSet(2, OutputSetTest.NEW) : OutputSetTest.expectedSet(1, OutputSetTest.OLD),
                 OutputSetTest.contents(dir), "one complete set and nothing hidden after the next run");
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"staged p.png", "staged p-distance.png", "staged p.json"})
+    void interruptedWhileStagingTheOldSetStaysAndNoHiddenFolderIsLeft(String step, @TempDir Path dir) throws Exception {
+        // Ctrl-C (SIGINT) runs the shutdown hooks, as System.exit does: the uncommitted staging folder is removed at
+        // once, not left for the next run of the prefix.
+        OutputSetTest.writeGeneration(dir, 1, OutputSetTest.OLD);
+        Process child = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                System.getProperty("java.class.path"), OutputSetKillTest.class.getName(), dir.toString(), step, "exit")
+                .redirectErrorStream(true).start();
+        assertTrue(child.waitFor(60, TimeUnit.SECONDS), "child finished");
+        String output = new String(child.getInputStream().readAllBytes());
+        assertEquals(130, child.exitValue(), "exited at " + step + ": " + output);
+        assertEquals(OutputSetTest.expectedSet(1, OutputSetTest.OLD), OutputSetTest.contents(dir),
+                "the old set as it was, and nothing hidden");
     }
 
     /** The files a user sees (no hidden staging). */
