@@ -39,7 +39,8 @@ final class ResultsCsv implements AutoCloseable {
     /** Appends a row's line and flushes it to the file. */
     synchronized void append(BatchResult r) throws IOException {
         String files = r.files().stream().map(f -> relative(f)).collect(Collectors.joining(" "));
-        printer.printRecord(r.id(), r.status().word(), files, String.format(Locale.ROOT, "%.3f", r.seconds()),
+        printer.printRecord(BatchIds.printable(r.id()), // control characters (a NUL in a refused id) as ?
+                r.status().word(), files, String.format(Locale.ROOT, "%.3f", r.seconds()),
                 r.error() == null ? "" : r.error());
         printer.flush();
     }

@@ -132,14 +132,20 @@ public final class ViewpointCsv {
     public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
         Path parent = file.toAbsolutePath().getParent();
         String text;
+        boolean malformed = false;
         try {
-            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
-        } catch (CharacterCodingException e) {
-            throw new ViewpointCsvException(file + ": not UTF-8 text", e);
+            byte[] bytes = Files.readAllBytes(file);
+            try {
+                text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+            } catch (CharacterCodingException e) {
+                // Bytes that are no UTF-8 spoil the rows they are in, not the file: those rows are errors (below).
+                text = new String(bytes, StandardCharsets.UTF_8);
+                malformed = true;
+            }
         } catch (IOException e) {
             throw new ViewpointCsvException("cannot read the viewpoint file " + file + ": " + IoMessages.reason(e), e);
         }
-        return parse(file.toString(), text, defaults, parent);
+        return parse(file.toString(), text, defaults, parent, malformed);
     }
 
     /**
@@ -161,6 +167,15 @@ public final class ViewpointCsv {
      * @param baseDir the folder relative image paths start from; null = the working directory
      */
     public static Parsed parse(String source, String text, PanoramaRequest defaults, Path baseDir) throws ViewpointCsvException {
+        return parse(source, text, defaults, baseDir, false);
+    }
+
+    /**
+     * As above; {@code malformed}: the file held bytes that are no UTF-8, decoded as U+FFFD, and a row holding one is
+     * that row's error (the header's, the file's).
+     */
+    private static Parsed parse(String source, String text, PanoramaRequest defaults, Path baseDir, boolean malformed)
+            throws ViewpointCsvException {
         if (text.startsWith("\uFEFF")) {
             text = text.substring(1);
         }
@@ -192,9 +207,19 @@ public final class ViewpointCsv {
                 if (f.stream().allMatch(String::isEmpty)) {
                     continue; // a line of spaces or bare commas
                 }
+                boolean notUtf8 = malformed && f.stream().anyMatch(v -> v.indexOf('\uFFFD') >= 0);
                 if (columns == null) {
+                    if (notUtf8) {
+                        throw new ViewpointCsvException(source + ": line " + line + ": not UTF-8 text (save the file as UTF-8)");
+                    }
                     columns = header(source, line, f, ignored);
                     headerFields = f.size();
+                    continue;
+                }
+                if (notUtf8) {
+                    String id = columns.get(ID) != null && f.size() > columns.get(ID) ? f.get(columns.get(ID)) : "";
+                    rows.add(BatchRow.invalid(line, BatchIds.printable(id), "line " + line
+                            + ": not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)"));
                     continue;
                 }
                 BatchRow row = row(line, f, headerFields, columns, defaults, firstLineOfId);

@@ -205,9 +205,16 @@ class ViewpointCsvTest {
                 () -> ViewpointCsv.read(dir.resolve("nope.csv"), DEFAULTS));
         assertTrue(missing.getMessage().startsWith("cannot read the viewpoint file " + dir.resolve("nope.csv")),
                 missing.getMessage());
-        Path latin1 = Files.write(dir.resolve("latin1.csv"), "id,lat,lon\nZ\u00fcrich,47,8\n".getBytes(StandardCharsets.ISO_8859_1));
-        ViewpointCsvException notUtf8 = assertThrows(ViewpointCsvException.class, () -> ViewpointCsv.read(latin1, DEFAULTS));
-        assertEquals(latin1 + ": not UTF-8 text", notUtf8.getMessage());
+        // A row with bytes that are no UTF-8 is that row's error; the other rows go on. In the header: the file's.
+        Path latin1 = Files.write(dir.resolve("latin1.csv"), "id,lat,lon\nZ\u00fcrich,47,8\nbern,46.9,7.4\n"
+                .getBytes(StandardCharsets.ISO_8859_1));
+        List<BatchRow> rows = ViewpointCsv.read(latin1, DEFAULTS).rows();
+        assertEquals(2, rows.size());
+        assertEquals("line 2: not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)", rows.get(0).error());
+        assertTrue(rows.get(1).valid(), rows.get(1).error());
+        Path badHeader = Files.write(dir.resolve("header.csv"), "id,lat,lon\u00b0\na,47,8\n".getBytes(StandardCharsets.ISO_8859_1));
+        ViewpointCsvException notUtf8 = assertThrows(ViewpointCsvException.class, () -> ViewpointCsv.read(badHeader, DEFAULTS));
+        assertEquals(badHeader + ": line 1: not UTF-8 text (save the file as UTF-8)", notUtf8.getMessage());
         Path folder = Files.createDirectory(dir.resolve("folder.csv"));
         assertThrows(ViewpointCsvException.class, () -> ViewpointCsv.read(folder, DEFAULTS));
         Path ok = Files.writeString(dir.resolve("ok.csv"), "id,lat,lon\na,47,8\n");
