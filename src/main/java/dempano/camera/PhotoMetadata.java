@@ -118,6 +118,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return message == null || message.isBlank() ? "unknown format" : message;
     }
 
+    /** Longest plausible 35 mm-equivalent focal length, mm (bridge cameras reach 3000). */
+    static final double MAX_FOCAL35_MM = 5000;
+
     /** The first {directory class, width tag, height tag} of the list that the metadata has both of; {0, 0} if none. */
     @SuppressWarnings("unchecked")
     private static int[] firstSize(Metadata metadata, Object[]... candidates) {
@@ -218,6 +221,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             focal = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_LENGTH)));
             Integer f35 = exif.getInteger(ExifSubIFDDirectory.TAG_35MM_FILM_EQUIV_FOCAL_LENGTH);
             focal35 = f35 == null ? Double.NaN : positive(f35);
+            if (focal35 > MAX_FOCAL35_MM) { // 65535: "unknown" in some cameras' EXIF; a 0.03° view otherwise
+                problems.add("FocalLengthIn35mmFilm " + f35 + " mm is beyond any lens (" + (int) MAX_FOCAL35_MM + " mm): not used");
+                focal35 = Double.NaN;
+            }
             sensorWidth = sensorLongSideMm(exif, storedWidth, storedHeight, problems);
         }
 

@@ -164,6 +164,18 @@ public final class Main implements Callable<Integer> {
         return repeat == 1 ? r.withoutMeshCache() : r;
     }
 
+    private static final java.util.regex.Pattern DECIMAL =
+            java.util.regex.Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?|[+-]?Infinity|NaN");
+
+    /** A number option's value: a plain decimal (no hexadecimal such as 0x1p5, no type suffix such as 46d). */
+    static Double decimal(String text) {
+        String t = text.trim();
+        if (!DECIMAL.matcher(t).matches()) {
+            throw new CommandLine.TypeConversionException("'" + text + "' is not a decimal number");
+        }
+        return Double.valueOf(t);
+    }
+
     private static CommandLine commandLine(RunContext context, String... args) {
         Main main = new Main();
         main.context = context;
@@ -176,6 +188,8 @@ public final class Main implements Callable<Integer> {
             cl.addSubcommand("batch", new BatchCommand());
             cl.addSubcommand(ResidentCommand.NAME, new ResidentCommand());
         }
+        // Numbers as the batch CSV reads them: plain decimals (NaN and Infinity pass, for the options' own messages).
+        cl.registerConverter(Double.class, Main::decimal).registerConverter(double.class, Main::decimal);
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());

@@ -62,6 +62,9 @@ public final class DemDirectory implements DemSource {
      */
     public DemDirectory(Path directory, int cachedTiles, VoidFill voidFill) {
         this.voidFill = java.util.Objects.requireNonNull(voidFill);
+        if (directory.toString().isEmpty()) { // Path.of("") is the working directory: a --dem-dir "" is a mistake
+            throw new DemException("DEM directory is empty (\"\"): give a folder");
+        }
         if (!Files.isDirectory(directory)) {
             throw new DemException("DEM directory " + directory + " does not exist or is not a directory");
         }

@@ -352,4 +352,14 @@ class PhotoMetadataTest {
             assertEquals(45, m.heightPx(), format);
         }
     }
+
+    @Test
+    void aFocalLengthBeyondAnyLensIsNotUsed(@TempDir Path dir) throws Exception {
+        PhotoMetadata unknown = PhotoMetadata.read(new ExifJpeg().orientation(1).focal35(65535).write(dir, "f.jpg", 80, 60));
+        assertTrue(Double.isNaN(unknown.focal35mmMm()), unknown.toString());
+        assertTrue(unknown.problems().stream().anyMatch(p -> p.contains("FocalLengthIn35mmFilm 65535 mm is beyond any lens")),
+                unknown.problems().toString());
+        PhotoMetadata superzoom = PhotoMetadata.read(new ExifJpeg().orientation(1).focal35(3000).write(dir, "z.jpg", 80, 60));
+        assertEquals(3000, superzoom.focal35mmMm(), 0);
+    }
 }

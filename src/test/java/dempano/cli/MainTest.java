@@ -53,6 +53,9 @@ class MainTest {
             "--lat 46 --lon 8 --dem-dir . --label-spacing-px NaN|--label-spacing-px must be a number, got NaN",
             "--lat 46 --lon 8 --dem-dir . --offset-m 1e300|offset must be a number of metres within ±1e6",
             "--lat 46 --lon 8 --dem-dir . --eye-height-m 1e9|eye height must be a number of metres in [0, 1e6)",
+            "--lat 0x1p5 --lon 8 --dem-dir .|'0x1p5' is not a decimal number",
+            "photo --lat 0x1p5 --lon 8 --dem-dir . --width-px 10 --height-px 10|'0x1p5' is not a decimal number",
+            "--lat 46d --lon 8 --dem-dir .|'46d' is not a decimal number",
     })
     void badArgumentsExitTwoWithAMessage(String args, String expected) {
         String[] r = run(args.split(" "));
@@ -69,6 +72,13 @@ class MainTest {
         assertEquals("1", r[0], r[1]);
         assertTrue(r[1].contains(expected), r[1]);
         assertFalse(r[1].contains("rendering"), "failed before rendering: " + r[1]);
+    }
+
+    @org.junit.jupiter.api.Test
+    void anEmptyDemFolderNameIsAnErrorNotTheWorkingDirectory() {
+        String[] r = run("--lat", "46", "--lon", "8", "--dem-dir", "");
+        assertEquals("1", r[0], r[1]);
+        assertTrue(r[1].contains("DEM directory is empty (\"\"): give a folder"), r[1]);
     }
 
     @ParameterizedTest
