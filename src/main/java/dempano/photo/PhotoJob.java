@@ -217,6 +217,7 @@ public final class PhotoJob {
             String line = est.provenance(open);
             log.result(line);
             OrientationEstimate e = est.estimate();
+            checkMatched(e, open, meta.missing(given));
             if (e.marginScore() < 0 && e.second() != null) {
                 // A heading pinned (or a prior) that the skyline contradicts: say where it fits, and how to search.
                 log.result(String.format(java.util.Locale.ROOT, "the skyline fits better at heading %.1f° than at %.1f°"
@@ -257,6 +258,22 @@ public final class PhotoJob {
                     new CameraWriter.Extras(photo, sightings, camera.provenance(), orientationFiles));
             set.commit();
             return new Result(camera, rendered, files);
+        }
+    }
+
+    /**
+     * Refuses an estimate that not one skyline sample fits (a photo upside down, of another place): there is no pose
+     * to render, only an arbitrary one (an unsure estimate that fits somewhere is written, flagged).
+     *
+     * @param missing what the metadata and flags leave missing, each with its flag, for the way out
+     * @throws IllegalArgumentException saying so
+     */
+    static void checkMatched(OrientationEstimate e, PhotoOrientation open, List<String> missing) {
+        if (!(e.inlierShare() > 0)) {
+            throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
+                    + " from the photo: its skyline fits the panorama at 0 % of its samples, in no pose (is the photo"
+                    + " upright, and the position right?)" + (missing.isEmpty() ? "" : "; give them instead:\n  - "
+                    + String.join("\n  - ", missing)));
         }
     }
 

@@ -70,4 +70,18 @@ class PhotoJobReadTest {
                     dempano.orient.SearchRanges.NONE.withHeadingRangeDeg(ok), settings, null, "x").headingRangeDeg(), 0);
         }
     }
+
+    @Test
+    void anEstimateNoSkylineSampleFitsIsRefusedAndOneThatFitsSomewhereIsKept() {
+        dempano.orient.PhotoOrientation open = new dempano.orient.PhotoOrientation(false, true, true, false, false);
+        java.util.function.DoubleFunction<dempano.orient.OrientationEstimate> fitting = share ->
+                new dempano.orient.OrientationEstimate(90, 0, 0, 50, share > 0 ? 1.5 : Double.NaN, share, 1 - share, Double.NaN,
+                        null, -0.1, true, 300, 1, Double.NaN, Double.NaN);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> PhotoJob.checkMatched(
+                fitting.apply(0), open, java.util.List.of("no camera pitch in the metadata: give --pitch-deg")));
+        assertEquals("could not estimate the pitch, roll from the photo: its skyline fits the panorama at 0 % of its samples,"
+                + " in no pose (is the photo upright, and the position right?); give them instead:\n"
+                + "  - no camera pitch in the metadata: give --pitch-deg", e.getMessage());
+        PhotoJob.checkMatched(fitting.apply(0.05), open, java.util.List.of()); // unsure, but a pose: written, flagged
+    }
 }
