@@ -1,12 +1,16 @@
 package dempano.spark;
 
+import static org.apache.spark.sql.functions.array;
+import static org.apache.spark.sql.functions.coalesce;
 import static org.apache.spark.sql.functions.col;
+import static org.apache.spark.sql.functions.explode;
 import static org.apache.spark.sql.functions.concat;
 import static org.apache.spark.sql.functions.first;
 import static org.apache.spark.sql.functions.floor;
 import static org.apache.spark.sql.functions.length;
 import static org.apache.spark.sql.functions.lit;
 import static org.apache.spark.sql.functions.lower;
+import static org.apache.spark.sql.functions.min;
 import static org.apache.spark.sql.functions.monotonically_increasing_id;
 import static org.apache.spark.sql.functions.rand;
 import static org.apache.spark.sql.functions.row_number;
@@ -65,6 +69,8 @@ public final class SparkBatch {
     public record Summary(long rows, long ok, long errors, double seconds, String results) {
     }
 
+    private static final String NAME = "_dempano_file", CLASH_SEQ = "_dempano_clash_seq", CLASH_ID = "_dempano_clash_id",
+            FIRST_ID = "_dempano_first_id", CLASH = "_dempano_clash";
     private static final String SEQ = "_dempano_seq", DUP = "_dempano_duplicate_of", TLAT = "_dempano_tile_lat",
             TLON = "_dempano_tile_lon", LAT = "_dempano_lat", LON = "_dempano_lon", KEY = "_dempano_key";
 
@@ -192,6 +198,24 @@ public final class SparkBatch {
         var byId = Window.partitionBy(KEY).orderBy(SEQ);
         rows = rows.withColumn(DUP, when(row_number().over(byId).gt(1),
                 concat(lit("row '"), first(id).over(byId), lit("'"))));
+
+        // Ids whose files would be another's (a and a-distance both write a-distance.png): the later one in table order
+        // is that row's error, as dempano batch has it (BatchIds.clashingIds).
+        List<Column> written = new ArrayList<>();
+        for (String suffix : dempano.batch.BatchIds.FILE_SUFFIXES) {
+            written.add(concat(col(KEY), lit(suffix.toLowerCase(Locale.ROOT))));
+        }
+        var byName = Window.partitionBy(NAME).orderBy(CLASH_SEQ);
+        Dataset<Row> clashes = rows.filter(safe.and(col(DUP).isNull()))
+                .select(col(SEQ).as(CLASH_SEQ), id.as(CLASH_ID), explode(array(written.toArray(new Column[0]))).as(NAME))
+                .withColumn(FIRST_ID, first(col(CLASH_ID)).over(byName))
+                .withColumn(CLASH, row_number().over(byName))
+                .filter(col(CLASH).gt(1))
+                .groupBy(CLASH_SEQ).agg(min(concat(lit("id '"), col(CLASH_ID), lit("' would write "), col(NAME),
+                        lit(", a file of id '"), col(FIRST_ID), lit("' (row '"), col(FIRST_ID),
+                        lit("'): choose ids that are not another id with a file suffix"))).as(CLASH));
+        rows = rows.join(clashes, rows.col(SEQ).equalTo(clashes.col(CLASH_SEQ)), "left_outer")
+                .withColumn(FIELDS_ERROR, coalesce(col(FIELDS_ERROR), col(CLASH))).drop(CLASH_SEQ, CLASH);
 
         // Photo rows without lat/lon (the position in the photo's EXIF) sort first, together.
         rows = rows.withColumn(LAT, known.containsKey(ViewpointCsv.LAT) ? col(ViewpointCsv.LAT).cast(DataTypes.DoubleType)

@@ -165,6 +165,7 @@ class SparkBatchTest {
         good.forEach(r -> text.append(String.join(",", r)).append('\n'));
         text.append("short,").append(lat).append(',').append(lon).append('\n');
         text.append("long,").append(lat).append(',').append(lon).append(",,,,,,,extra\n");
+        text.append("VIEW-distance,").append(lat).append(',').append(lon).append(",,,,,,\n"); // would write view's picture
         Path csv = Files.writeString(tmp.resolve("photos.csv"), text.toString(), StandardCharsets.UTF_8);
 
         Path batchOut = tmp.resolve("photo-batch");
@@ -179,7 +180,7 @@ class SparkBatchTest {
         new CommandLine(main).parseArgs(sparkArgs.toArray(new String[0]));
         SparkBatch.Summary s = SparkBatch.run(spark, SparkBatch.read(spark, csv.toString(), null), main.settings(),
                 SparkBatch.Order.TILE, 2, 1);
-        assertEquals(7, s.rows());
+        assertEquals(8, s.rows());
         assertEquals(3, s.ok());
 
         Map<String, CSVRecord> batch = byId(records(batchOut.resolve("results.csv")));
@@ -193,6 +194,10 @@ class SparkBatchTest {
         assertEquals("row 'short': 3 fields, the header has 9", sparkResults.get("short").get("error"));
         assertEquals("row 'long': 10 fields, the header has 9", sparkResults.get("long").get("error"));
         assertEquals("line 7: 3 fields, the header has 9", batch.get("short").get("error"));
+        assertEquals("row 'VIEW-distance': id 'VIEW-distance' would write view-distance.png, a file of id 'view' (row 'view'):"
+                + " choose ids that are not another id with a file suffix", sparkResults.get("VIEW-distance").get("error"));
+        assertEquals("line 9: id 'VIEW-distance' would write view-distance.png, a file of id 'view' (line 2): choose ids"
+                + " that are not another id with a file suffix", batch.get("VIEW-distance").get("error"));
         assertTrue(sparkResults.get("gone").get("error").contains("gone.png"), sparkResults.get("gone").get("error"));
         assertTrue(sparkResults.get("noimage").get("error").contains("heading_deg is for photo rows"),
                 sparkResults.get("noimage").get("error"));
