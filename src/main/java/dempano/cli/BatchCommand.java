@@ -140,9 +140,19 @@ public final class BatchCommand implements Callable<Integer> {
                     dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
             Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");
             Runtime.getRuntime().addShutdownHook(hook);
+            // The exit cleanup of uncommitted output sets waits for the row in progress, which Ctrl-C lets finish.
+            Runnable finishing = () -> {
+                try {
+                    run.awaitFinished(INTERRUPT_GRACE.plusSeconds(5));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            };
+            dempano.io.OutputSet.finishBeforeCleanup(finishing);
             try {
                 summary = run.run();
             } finally {
+                dempano.io.OutputSet.noLongerFinishing(finishing);
                 try {
                     Runtime.getRuntime().removeShutdownHook(hook);
                 } catch (IllegalStateException e) {

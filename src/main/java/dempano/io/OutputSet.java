@@ -69,6 +69,21 @@ public final class OutputSet implements AutoCloseable {
     }
 
     private static final java.util.concurrent.atomic.AtomicBoolean CLEANUP_HOOKED = new java.util.concurrent.atomic.AtomicBoolean();
+    private static final Set<Runnable> FINISHING = ConcurrentHashMap.newKeySet();
+
+    /**
+     * Registers work that an interrupted process lets finish before the exit cleanup discards the uncommitted sets (a
+     * batch finishes the row in progress on Ctrl-C): {@code awaitDone} blocks until that work is done or given up,
+     * and the cleanup runs it first. Unregister with {@link #noLongerFinishing}.
+     */
+    public static void finishBeforeCleanup(Runnable awaitDone) {
+        FINISHING.add(awaitDone);
+    }
+
+    /** Undoes {@link #finishBeforeCleanup}. */
+    public static void noLongerFinishing(Runnable awaitDone) {
+        FINISHING.remove(awaitDone);
+    }
 
     /**
      * Removes this JVM's staging folders that were never committed (run at exit, Ctrl-C included): the previous sets
@@ -77,6 +92,13 @@ public final class OutputSet implements AutoCloseable {
      * run finishes it).
      */
     static void discardUncommitted() {
+        for (Runnable finishing : List.copyOf(FINISHING)) {
+            try {
+                finishing.run(); // an orderly end in progress (a batch's row being finished): its commit comes first
+            } catch (RuntimeException e) {
+                // given up: what it left uncommitted is discarded below
+            }
+        }
         for (Path staging : List.copyOf(ACTIVE)) {
             String name = staging.getFileName().toString();
             int infix = name.lastIndexOf(STAGING_INFIX);

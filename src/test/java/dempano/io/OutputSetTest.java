@@ -99,6 +99,31 @@ class OutputSetTest {
     }
 
     @Test
+    void theExitCleanupLetsRegisteredWorkCommitFirstAndDiscardsTheRest(@TempDir Path dir) throws IOException {
+        // What Ctrl-C does (the cleanup runs as a shutdown hook): a batch's row in progress is let finish, an
+        // abandoned set is discarded, and nothing hidden is left.
+        OutputSet finishing = OutputSet.open(dir.resolve("p").toString());
+        OutputSet abandoned = OutputSet.open(dir.resolve("q").toString());
+        stage(finishing, 1, List.of(".png"));
+        abandoned.write(".png", out -> out.write(1));
+        Runnable commitIt = () -> {
+            try {
+                finishing.commit();
+            } catch (IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+        OutputSet.finishBeforeCleanup(commitIt);
+        try {
+            OutputSet.discardUncommitted();
+        } finally {
+            OutputSet.noLongerFinishing(commitIt);
+        }
+        assertEquals(expectedSet(1, List.of(".png")), contents(dir), "p committed, q's staging gone");
+        abandoned.close(); // already discarded: nothing to do
+    }
+
+    @Test
     void aFailureWhileStagingLeavesTheOldSetAndNothingElse(@TempDir Path dir) throws IOException {
         writeGeneration(dir, 1, OLD);
         try (OutputSet set = OutputSet.open(dir.resolve("p").toString())) {
