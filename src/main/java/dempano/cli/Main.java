@@ -189,7 +189,10 @@ public final class Main implements Callable<Integer> {
             cl.addSubcommand(ResidentCommand.NAME, new ResidentCommand());
         }
         // Numbers as the batch CSV reads them: plain decimals (NaN and Infinity pass, for the options' own messages).
-        cl.registerConverter(Double.class, Main::decimal).registerConverter(double.class, Main::decimal);
+        // One converter object for both: two method references of one signature here crashed the JDK's class-data
+        // dump (two identical lambda-proxy entries in the class list; SIGSEGV in adjust_lambda_proxy_class_dictionary).
+        CommandLine.ITypeConverter<Double> decimal = Main::decimal;
+        cl.registerConverter(Double.class, decimal).registerConverter(double.class, decimal);
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());
