@@ -133,7 +133,7 @@ public final class SummitWriter {
                 + "slant_m,ground_m,map_distance_m,seen_distance_m,visible,dem_height_m,in_filled_void\n");
         for (SummitSighting s : sightings) {
             String name = s.summit().name();
-            if (name.contains(",") || name.contains("\"")) {
+            if (name.contains(",") || name.contains("\"") || name.contains("\n") || name.contains("\r")) {
                 name = "\"" + name.replace("\"", "\"\"") + "\"";
             }
             b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s,%s,%s%n", name,

@@ -26,12 +26,15 @@ public record SummitList(String source, List<Summit> summits, List<String> skipp
 
     /**
      * What a user should be told about the list beyond the skipped entries, one sentence each without
-     * a "warning:" prefix: today only an empty list ("no summits in FILE", with how many entries were
-     * skipped when all were). Empty when there is nothing to say.
+     * a "warning:" prefix: an empty list ("no summits in FILE", with how many entries were skipped when all
+     * were), or summits without an elevation, which projection leaves out. Empty when there is nothing to say.
      */
     public List<String> warnings() {
         if (!summits.isEmpty()) {
-            return List.of();
+            long noHeight = summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).count();
+            return noHeight == 0 ? List.of() : List.of(noHeight + " of the " + summits.size() + " summits in " + source
+                    + " have no elevation and are left out (a summit is placed by its height; e.g. "
+                    + summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).findFirst().get().name() + ")");
         }
         return List.of("no summits in " + source + (skipped.isEmpty() ? ""
                 : " (all " + skipped.size() + " entries were skipped as bad)"));

@@ -398,7 +398,9 @@ public final class SummitReader {
         if (!(lon >= -180 && lon <= 180)) {
             throw new IllegalArgumentException("longitude " + lon + " out of range -180…180");
         }
-        return new Summit(name, lat, lon, elevation);
+        // Control characters (a GeoJSON name may hold line breaks and tabs) as spaces, as the text formats' lines have
+        // them: a name is one line in P-summits.csv and on the labels.
+        return new Summit(name == null ? null : name.replaceAll("\\p{Cntrl}", " ").trim(), lat, lon, elevation);
     }
 
     static boolean isDecimal(String s) {

@@ -60,6 +60,25 @@ class SummitReaderTest {
     }
 
     @Test
+    void summitsWithoutAnElevationAreSaidToBeLeftOut() {
+        // Projection places a summit by its height: one without is left out, which was silent.
+        SummitList l = SummitReader.csv("p.csv", "name,lat,lon,ele\nNoHeight,46.55,8.55,\nOK,46.56,8.55,2400\n", false);
+        assertEquals(2, l.size());
+        assertEquals(List.of("1 of the 2 summits in p.csv have no elevation and are left out (a summit is placed by its"
+                + " height; e.g. NoHeight)"), l.warnings());
+    }
+
+    @Test
+    void aGeoJsonNameWithLineBreaksIsOneLine(@TempDir Path dir) throws Exception {
+        // It became two broken rows of P-summits.csv.
+        Path f = Files.writeString(dir.resolve("p.geojson"), "{\"type\": \"FeatureCollection\", \"features\": [{\"type\":"
+                + " \"Feature\", \"geometry\": {\"type\": \"Point\", \"coordinates\": [8.56, 46.56]}, \"properties\":"
+                + " {\"name\": \"CR\\rLF\\nTab\\tEnd\", \"ele\": 2400}}]}");
+        SummitList l = SummitReader.read(f, false);
+        assertEquals("CR LF Tab End", l.summits().get(0).name());
+    }
+
+    @Test
     void geoJsonPointsWithEleUnits(@TempDir Path dir) throws Exception {
         Path f = dir.resolve("peaks.geojson");
         Files.writeString(f, """
