@@ -106,6 +106,12 @@ final class ResidentClient {
         }
     }
 
+    /**
+     * Seconds a resident process has to send its first frame (it acknowledges a run at once, status and stop are
+     * answered at once) before the client gives it up. (Not final: a test waits less.)
+     */
+    static volatile int FIRST_FRAME_SECONDS = 15;
+
     /** The connection ended before the resident process answered at all (it was ending). */
     static final class Unanswered extends IOException {
         Unanswered(String message) {
@@ -134,14 +140,37 @@ final class ResidentClient {
             throw new Unanswered("the resident process could not be told the run (" + e.getMessage() + ")");
         }
         DataInputStream in = new DataInputStream(new java.io.BufferedInputStream(ResidentProtocol.in(ch)));
+        // A process that accepts but never answers (stopped, hung) must not hang this client: without a first frame
+        // within FIRST_FRAME_SECONDS the connection is closed, and the run renders here (status and stop say so).
+        Object log = logOf(socketOf(ch)); // while the channel is open (a closed one has no address)
+        java.util.concurrent.CountDownLatch firstFrame = new java.util.concurrent.CountDownLatch(1);
+        boolean[] timedOut = {false};
+        Thread watchdog = new Thread(() -> {
+            try {
+                if (!firstFrame.await(FIRST_FRAME_SECONDS, java.util.concurrent.TimeUnit.SECONDS)) {
+                    timedOut[0] = true;
+                    ch.close();
+                }
+            } catch (InterruptedException | IOException e) {
+                // done either way
+            }
+        }, "dempano-resident-watchdog");
+        watchdog.setDaemon(true);
+        watchdog.start();
         for (boolean answered = false; ; answered = true) {
             ResidentProtocol.Frame f;
             try {
                 f = ResidentProtocol.Frame.read(in);
+                firstFrame.countDown();
             } catch (IOException e) {
                 out.flush();
-                String why = "the resident process ended before the run did (" + (e.getMessage() == null
-                        ? e.getClass().getSimpleName() : e.getMessage()) + "; its log: " + logOf(socketOf(ch)) + ")";
+                String why = timedOut[0] ? "the resident process did not answer within " + FIRST_FRAME_SECONDS + " s (stopped or"
+                        + " hung? `kill` it; its log: " + log + ")"
+                        : "the resident process ended before the run did (" + (e.getMessage() == null
+                        ? e.getClass().getSimpleName() : e.getMessage()) + "; its log: " + log + ")";
+                if (timedOut[0]) {
+                    throw new IOException(why, e); // not again: a second wait would only double the delay
+                }
                 throw answered ? new IOException(why, e) : new Unanswered(why);
             }
             switch (f.type()) {

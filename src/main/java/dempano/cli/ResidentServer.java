@@ -213,6 +213,7 @@ public final class ResidentServer {
                         w.refused("is busy with another run");
                         return;
                     }
+                    w.bytes(ResidentProtocol.ERR, new byte[0], 0, 0); // taken: the client's first frame, at once
                     boolean ending = true;
                     try {
                         int code = render(in, req, w);

@@ -111,6 +111,42 @@ class ResidentClientTest {
     }
 
     @Test
+    void aProcessThatAcceptsButNeverAnswersDoesNotHangTheClient(@TempDir Path dir) throws Exception {
+        // A resident process stopped (kill -STOP) or hung: the kernel still accepts connections. Every later run and
+        // `resident stop` hung; now the client gives up after FIRST_FRAME_SECONDS and the run renders in the client.
+        Path socket = dir.resolve("s.sock");
+        try (java.nio.channels.ServerSocketChannel server = java.nio.channels.ServerSocketChannel.open(
+                java.net.StandardProtocolFamily.UNIX)) {
+            server.bind(java.net.UnixDomainSocketAddress.of(socket));
+            java.util.List<java.nio.channels.SocketChannel> held = new java.util.concurrent.CopyOnWriteArrayList<>();
+            Thread acceptor = new Thread(() -> {
+                try {
+                    held.add(server.accept()); // and never a byte back
+                } catch (IOException e) {
+                    // closed
+                }
+            });
+            acceptor.setDaemon(true);
+            acceptor.start();
+            int before = ResidentClient.FIRST_FRAME_SECONDS;
+            ResidentClient.FIRST_FRAME_SECONDS = 1;
+            long t0 = System.nanoTime();
+            try (java.nio.channels.SocketChannel ch = ResidentClient.connect(socket)) {
+                IOException e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
+                        ResidentProtocol.STATUS, "stamp", dir.toString(), List.of()), System.out, System.err));
+                assertTrue(e.getMessage().contains("did not answer within 1 s"), e.getMessage());
+                assertFalse(e instanceof ResidentClient.Unanswered, "not tried again");
+            } finally {
+                ResidentClient.FIRST_FRAME_SECONDS = before;
+                for (java.nio.channels.SocketChannel c : held) {
+                    c.close();
+                }
+            }
+            assertTrue((System.nanoTime() - t0) / 1e9 < 10, "gave up after about a second");
+        }
+    }
+
+    @Test
     void theIdleTimeIsWholeSecondsOrTheDefault() {
         assertEquals(ResidentClient.DEFAULT_IDLE_SECONDS, ResidentClient.idleSeconds(Map.of()));
         assertEquals(30, ResidentClient.idleSeconds(Map.of("DEMPANO_RESIDENT_IDLE_S", " 30 ")));
