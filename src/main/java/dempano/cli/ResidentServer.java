@@ -56,6 +56,7 @@ public final class ResidentServer {
      */
     Runnable onHangUp = () -> {
         closeQuietly(); // no new client may connect to a process that is ending (the exit itself takes a while)
+        dempano.io.OutputSet.discardUncommitted(); // halt runs no shutdown hook: the run's staging folder, removed here
         Runtime.getRuntime().halt(130);
     };
     private final KeptRenderer renderers = new KeptRenderer();

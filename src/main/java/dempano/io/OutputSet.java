@@ -89,9 +89,10 @@ public final class OutputSet implements AutoCloseable {
      * Removes this JVM's staging folders that were never committed (run at exit, Ctrl-C included): the previous sets
      * stay as they were, and no hidden folder of half-written files is left for the next run of the prefix to find. A
      * folder whose commit has begun is left alone under the prefix's lock (the commit finishes first, or the next
-     * run finishes it).
+     * run finishes it). Public for a process that ends by {@code Runtime.halt} (no hooks run): the resident process
+     * when its client goes away.
      */
-    static void discardUncommitted() {
+    public static void discardUncommitted() {
         for (Runnable finishing : List.copyOf(FINISHING)) {
             try {
                 finishing.run(); // an orderly end in progress (a batch's row being finished): its commit comes first
