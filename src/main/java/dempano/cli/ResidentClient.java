@@ -354,6 +354,20 @@ final class ResidentClient {
      * A hash (16 hex digits) of what a run's result may depend on besides its arguments and working directory
      * (see the class comment).
      */
+    /** This process's file-creation mask ("0022"), from /proc (Linux); "" where it cannot be read. */
+    static String umask() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("Umask:")) {
+                    return line.substring("Umask:".length()).trim();
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // not Linux: every client shares a process, as before
+        }
+        return "";
+    }
+
     static String stamp(Map<String, String> env) {
         StringBuilder s = new StringBuilder();
         s.append(System.getProperty("java.home")).append('\n').append(System.getProperty("java.vm.version")).append('\n');
@@ -364,6 +378,9 @@ final class ResidentClient {
                 s.append(k).append('=').append(v).append('\n');
             }
         });
+        // The umask too: the process writes the files with its own, which it inherits from the client that started it
+        // (a client with umask 077 got files readable by all from a process started under 022).
+        s.append("umask=").append(umask()).append('\n');
         long h = 0xCBF29CE484222325L;
         for (int i = 0; i < s.length(); i++) {
             h = (h ^ s.charAt(i)) * 0x100000001B3L;

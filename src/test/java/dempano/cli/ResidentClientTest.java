@@ -78,6 +78,16 @@ class ResidentClientTest {
     }
 
     @Test
+    void theUmaskIsReadAsTheShellShowsIt() throws Exception {
+        // Part of the stamp: a client with another umask gets another process, which writes with that umask.
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isReadable(Path.of("/proc/self/status")), "no /proc here");
+        Process sh = new ProcessBuilder("/bin/sh", "-c", "umask").start(); // a child has this process's umask
+        String shown = new String(sh.getInputStream().readAllBytes(), StandardCharsets.US_ASCII).trim();
+        assertEquals(0, sh.waitFor());
+        assertEquals(Integer.parseInt(shown, 8), Integer.parseInt(ResidentClient.umask(), 8), shown);
+    }
+
+    @Test
     void theFolderIsTheUsersAlone(@TempDir Path dir) throws IOException {
         Path own = dir.resolve("mine");
         assertEquals(own.toAbsolutePath(), ResidentClient.directory(Map.of("DEMPANO_RESIDENT_DIR", own.toString())));
