@@ -298,6 +298,25 @@ public final class Main implements Callable<Integer> {
             throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
         }
         boolean reference = panorama.referenceRenderer();
+        if (reference) {
+            // The CPU reference casts every pixel's own ray: no views, depth buffer or near plane to set.
+            List<String> unused = new java.util.ArrayList<>();
+            if (panorama.views != 8) {
+                unused.add("--views");
+            }
+            if (!panorama.view.depthMode.equals("shader")) {
+                unused.add("--depth-mode");
+            }
+            if (panorama.view.supersampling != 1) {
+                unused.add("--supersampling");
+            }
+            if (panorama.view.nearMetres != 1) {
+                unused.add("--near-m");
+            }
+            if (!unused.isEmpty()) {
+                System.err.println("  warning: " + String.join(", ", unused) + " not used: --renderer reference draws no views");
+            }
+        }
         PanoramaWriter.Options writing = new PanoramaWriter.Options(panorama.pfm, summitList == null ? null : java.util.List.of(),
                 labelOptions);
         long t0 = System.nanoTime();

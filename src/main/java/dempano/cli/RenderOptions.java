@@ -34,7 +34,7 @@ public class RenderOptions implements Serializable {
     public String depthMode = "shader";
     @Option(names = "--layers", split = ",", paramLabel = "LAYER", description = "Extra per-pixel layers, comma-separated: elevation, latitude, longitude, ground-distance, incidence (degrees between ray and terrain), uncertainty (metres of distance error from SRTM's 10 m vertical error).")
     public List<String> layers = new ArrayList<>();
-    @Option(names = "--near-m", description = "Near plane, metres (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    @Option(names = "--near-m", description = "Near plane, metres: an upper bound, lowered where terrain comes nearer to the eye (P.json has the one used) (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     public double nearMetres = 1;
     @Option(names = "--supersampling", description = "View pixels per output pixel (panorama or photo pixel), linear (default: ${DEFAULT-VALUE}).", defaultValue = "1")
     public double supersampling = 1;

@@ -75,6 +75,14 @@ class MainTest {
     }
 
     @org.junit.jupiter.api.Test
+    void viewOptionsGivenToTheReferenceRendererAreSaidToBeUnused(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) {
+        String[] r = run("--renderer", "reference", "--views", "4", "--near-m", "50", "--ppd", "1", "--range-km", "5",
+                "--out", dir.resolve("p").toString());
+        assertEquals("0", r[0], r[1]);
+        assertTrue(r[1].contains("warning: --views, --near-m not used: --renderer reference draws no views"), r[1]);
+    }
+
+    @org.junit.jupiter.api.Test
     void anEmptyDemFolderNameIsAnErrorNotTheWorkingDirectory() {
         String[] r = run("--lat", "46", "--lon", "8", "--dem-dir", "");
         assertEquals("1", r[0], r[1]);
