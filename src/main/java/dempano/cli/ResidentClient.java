@@ -100,7 +100,13 @@ final class ResidentClient {
         } catch (Refused e) {
             System.err.println("dempano: " + e.getMessage() + ": rendering in this process");
             return NOT_SERVED;
-        } catch (IOException | RuntimeException e) {
+        } catch (IOException e) {
+            // e.g. a folder where the socket should be: its path alone was the message
+            String why = e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null
+                    ? fs.getFile() + ": " + dempano.io.IoMessages.reason(e) : e.getMessage();
+            System.err.println("dempano: no resident process (" + why + "): rendering in this process");
+            return NOT_SERVED;
+        } catch (RuntimeException e) {
             System.err.println("dempano: no resident process (" + e.getMessage() + "): rendering in this process");
             return NOT_SERVED;
         }

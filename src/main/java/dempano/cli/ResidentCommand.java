@@ -38,7 +38,13 @@ final class ResidentCommand implements Callable<Integer> {
         int answered = 0;
         String stamp = ResidentClient.stamp(env);
         for (Path socket : sockets) {
-            SocketChannel ch = ResidentClient.connect(socket); // a socket nobody listens on is removed
+            SocketChannel ch;
+            try {
+                ch = ResidentClient.connect(socket); // a socket nobody listens on is removed
+            } catch (IOException e) {
+                System.out.println(socket + ": not a resident process's socket (" + dempano.io.IoMessages.reason(e) + ")");
+                continue;
+            }
             if (ch == null) {
                 continue;
             }
