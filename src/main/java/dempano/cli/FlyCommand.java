@@ -72,6 +72,14 @@ public final class FlyCommand implements Callable<Integer> {
                     + "window at least 64×64");
         }
         new Refraction(refraction); // validates
+        if (!demo) { // the arguments before the display, as every other command has them
+            dempano.dem.TileSelection.checkCoordinates(latDeg, lonDeg);
+            for (Path d : demDirs) {
+                if (!java.nio.file.Files.isDirectory(d)) {
+                    throw new dempano.dem.DemException("DEM directory " + d + " does not exist or is not a directory");
+                }
+            }
+        }
         OnscreenRenderer.checkDisplay(); // before the demo DEM is written or jME started
         java.util.List<Path> dirs = demo ? java.util.List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;

@@ -54,6 +54,7 @@ class MainTest {
             "--lat 46 --lon 8 --dem-dir . --offset-m 1e300|offset must be a number of metres within ±1e6",
             "--lat 46 --lon 8 --dem-dir . --eye-height-m 1e9|eye height must be a number of metres in [0, 1e6)",
             "--lat 0x1p5 --lon 8 --dem-dir .|'0x1p5' is not a decimal number",
+            "fly --lat 100 --lon 8 --dem-dir .|latitude must be in",
             "photo --lat 0x1p5 --lon 8 --dem-dir . --width-px 10 --height-px 10|'0x1p5' is not a decimal number",
             "--lat 46d --lon 8 --dem-dir .|'46d' is not a decimal number",
     })
