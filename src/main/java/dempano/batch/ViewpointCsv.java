@@ -17,7 +17,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.regex.Pattern;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVParser;
 import org.apache.commons.csv.CSVRecord;
@@ -92,15 +91,13 @@ public final class ViewpointCsv {
             new PhotoColumn(ALTITUDE_M, "altitude", PhotoOverrides::withAltitudeMetres),
             new PhotoColumn(OFFSET_M, "offset", PhotoOverrides::withOffsetMetres),
             new PhotoColumn(EYE_HEIGHT_M, "eye height", PhotoOverrides::withCameraHeightMetres),
-            new PhotoColumn(HEADING_DEG, "heading", PhotoOverrides::withHeadingDeg, 360),
-            new PhotoColumn(PITCH_DEG, "pitch", PhotoOverrides::withPitchDeg, 90),
-            new PhotoColumn(ROLL_DEG, "roll", PhotoOverrides::withRollDeg, 180),
+            new PhotoColumn(HEADING_DEG, "heading", PhotoOverrides::withHeadingDeg, PhotoOverrides.HEADING_LIMIT_DEG),
+            new PhotoColumn(PITCH_DEG, "pitch", PhotoOverrides::withPitchDeg, PhotoOverrides.PITCH_LIMIT_DEG),
+            new PhotoColumn(ROLL_DEG, "roll", PhotoOverrides::withRollDeg, PhotoOverrides.ROLL_LIMIT_DEG),
             new PhotoColumn(HFOV_DEG, "horizontal field of view", PhotoOverrides::withHorizontalFovDeg),
             new PhotoColumn(FOCAL35_MM, "35 mm-equivalent focal length", PhotoOverrides::withFocal35mmMm));
 
     private static final List<String> REQUIRED = List.of(ID, LAT, LON);
-    /** Plain decimal numbers: no NaN, Infinity, hexadecimal, type suffixes or decimal commas. */
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
 
     private ViewpointCsv() {
     }
@@ -383,7 +380,7 @@ public final class ViewpointCsv {
         if (s.isEmpty()) {
             return absent;
         }
-        if (!DECIMAL.matcher(s).matches()) {
+        if (!dempano.util.Decimals.isPlain(s)) {
             throw new IllegalArgumentException(what + " '" + BatchIds.printable(s) + "' is not a decimal number");
         }
         double v = Double.parseDouble(s);

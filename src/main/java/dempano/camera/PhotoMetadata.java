@@ -235,14 +235,14 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             if (meta == null || attitudeSource != null) {
                 continue;
             }
-            double y = xmpDouble(meta, DJI_NAMESPACE, "GimbalYawDegree", problems);
-            double p = xmpDouble(meta, DJI_NAMESPACE, "GimbalPitchDegree", problems);
-            double r = xmpDouble(meta, DJI_NAMESPACE, "GimbalRollDegree", problems);
+            double y = xmpDouble(meta, DJI_NAMESPACE, "GimbalYawDegree", PhotoOverrides.HEADING_LIMIT_DEG, problems);
+            double p = xmpDouble(meta, DJI_NAMESPACE, "GimbalPitchDegree", PhotoOverrides.PITCH_LIMIT_DEG, problems);
+            double r = xmpDouble(meta, DJI_NAMESPACE, "GimbalRollDegree", PhotoOverrides.ROLL_LIMIT_DEG, problems);
             String src = "drone-dji:Gimbal{Yaw,Pitch,Roll}Degree";
             if (Double.isNaN(y) && Double.isNaN(p) && Double.isNaN(r)) {
-                y = xmpDouble(meta, GPANO_NAMESPACE, "PoseHeadingDegrees", problems);
-                p = xmpDouble(meta, GPANO_NAMESPACE, "PosePitchDegrees", problems);
-                r = xmpDouble(meta, GPANO_NAMESPACE, "PoseRollDegrees", problems);
+                y = xmpDouble(meta, GPANO_NAMESPACE, "PoseHeadingDegrees", PhotoOverrides.HEADING_LIMIT_DEG, problems);
+                p = xmpDouble(meta, GPANO_NAMESPACE, "PosePitchDegrees", PhotoOverrides.PITCH_LIMIT_DEG, problems);
+                r = xmpDouble(meta, GPANO_NAMESPACE, "PoseRollDegrees", PhotoOverrides.ROLL_LIMIT_DEG, problems);
                 src = "GPano:Pose{Heading,Pitch,Roll}Degrees";
             }
             if (!Double.isNaN(y) || !Double.isNaN(p) || !Double.isNaN(r)) {
@@ -339,20 +339,15 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return Math.max(pw / xRes, ph / yRes) * unitMm;
     }
 
-    /** A plain decimal number (as XMP writes them): no hexadecimal, NaN, Infinity or type suffixes. */
-    private static final java.util.regex.Pattern PLAIN_DECIMAL =
-            java.util.regex.Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
-
-    /** An XMP angle, degrees: NaN where absent, or (with a problem said) not a number or beyond a full turn (pitch ±90°, roll ±180°). */
-    private static double xmpDouble(XMPMeta meta, String namespace, String property, List<String> problems) {
+    /** An XMP angle, degrees: NaN where absent, or (with a problem said) not a plain decimal or beyond ±{@code limit}. */
+    private static double xmpDouble(XMPMeta meta, String namespace, String property, double limit, List<String> problems) {
         try {
             XMPProperty p = meta.getProperty(namespace, property);
             if (p == null || p.getValue() == null) {
                 return Double.NaN;
             }
             String text = p.getValue().trim();
-            double limit = property.contains("Pitch") ? 90 : property.contains("Roll") ? 180 : 360;
-            if (PLAIN_DECIMAL.matcher(text).matches()) {
+            if (dempano.util.Decimals.isPlain(text)) {
                 double v = Double.parseDouble(text);
                 if (Math.abs(v) <= limit) {
                     return v;

@@ -41,6 +41,14 @@ public record PhotoOverrides(double latDeg, double lonDeg, double altitudeMetres
     public static final String FOCAL35 = "--focal35-mm";
     public static final String HFOV = "--hfov-deg";
 
+    /**
+     * Largest magnitude of the angles a user gives (flags, batch columns, XMP), degrees: a heading within a turn either
+     * way, a declination and a roll within half a turn, a pitch within straight up and down. Beyond them a value is
+     * a typo or garbage (a heading of 1e308), not a direction.
+     */
+    public static final double HEADING_LIMIT_DEG = 360, DECLINATION_LIMIT_DEG = 180, PITCH_LIMIT_DEG = 90,
+            ROLL_LIMIT_DEG = 180;
+
     private static final double N = Double.NaN;
 
     /** Nothing overridden. */

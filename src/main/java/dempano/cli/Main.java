@@ -164,13 +164,10 @@ public final class Main implements Callable<Integer> {
         return repeat == 1 ? r.withoutMeshCache() : r;
     }
 
-    private static final java.util.regex.Pattern DECIMAL =
-            java.util.regex.Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?|[+-]?Infinity|NaN");
-
     /** A number option's value: a plain decimal (no hexadecimal such as 0x1p5, no type suffix such as 46d). */
     static Double decimal(String text) {
         String t = text.trim();
-        if (!DECIMAL.matcher(t).matches()) {
+        if (!dempano.util.Decimals.isPlain(t) && !t.matches("[+-]?Infinity|NaN")) {
             throw new CommandLine.TypeConversionException("'" + text + "' is not a decimal number");
         }
         return Double.valueOf(t);

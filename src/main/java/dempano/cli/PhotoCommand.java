@@ -186,10 +186,11 @@ public final class PhotoCommand implements Callable<Integer> {
         o = altitudeMetres == null ? o : o.withAltitudeMetres(finite(PhotoOverrides.ALTITUDE, altitudeMetres));
         o = offsetMetres == null ? o : o.withOffsetMetres(finite(PhotoOverrides.OFFSET, offsetMetres));
         o = cameraHeightMetres == null ? o : o.withCameraHeightMetres(finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres));
-        o = headingDeg == null ? o : o.withHeadingDeg(within(PhotoOverrides.HEADING, headingDeg, 360));
-        o = declinationDeg == null ? o : o.withDeclinationDeg(within(PhotoOverrides.DECLINATION, declinationDeg, 180));
-        o = pitchDeg == null ? o : o.withPitchDeg(within(PhotoOverrides.PITCH, pitchDeg, 90));
-        o = rollDeg == null ? o : o.withRollDeg(within(PhotoOverrides.ROLL, rollDeg, 180));
+        o = headingDeg == null ? o : o.withHeadingDeg(within(PhotoOverrides.HEADING, headingDeg, PhotoOverrides.HEADING_LIMIT_DEG));
+        o = declinationDeg == null ? o : o.withDeclinationDeg(within(PhotoOverrides.DECLINATION, declinationDeg,
+                PhotoOverrides.DECLINATION_LIMIT_DEG));
+        o = pitchDeg == null ? o : o.withPitchDeg(within(PhotoOverrides.PITCH, pitchDeg, PhotoOverrides.PITCH_LIMIT_DEG));
+        o = rollDeg == null ? o : o.withRollDeg(within(PhotoOverrides.ROLL, rollDeg, PhotoOverrides.ROLL_LIMIT_DEG));
         o = focalMm == null ? o : o.withFocalLengthMm(finite(PhotoOverrides.FOCAL, focalMm));
         o = sensorWidthMm == null ? o : o.withSensorWidthMm(finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm));
         o = focal35Mm == null ? o : o.withFocal35mmMm(finite(PhotoOverrides.FOCAL35, focal35Mm));

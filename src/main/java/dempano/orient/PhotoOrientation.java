@@ -85,9 +85,6 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         return altitude && e != null && Double.isFinite(e.altitudeOffsetMetres());
     }
 
-    /** How a provenance line says that a value was estimated ({@link PhotoMetadata#ESTIMATED}). */
-    public static final String ESTIMATED = PhotoMetadata.ESTIMATED;
-
     /**
      * The flags whose values {@link #apply} (or, with a null estimate, {@link #placeholders}) passed in as overrides
      * though nobody gave them: for {@link PhotoMetadata#resolve(PhotoOverrides, double, java.util.Set)}, whose

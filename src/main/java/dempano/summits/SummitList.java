@@ -31,10 +31,10 @@ public record SummitList(String source, List<Summit> summits, List<String> skipp
      */
     public List<String> warnings() {
         if (!summits.isEmpty()) {
-            long noHeight = summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).count();
-            return noHeight == 0 ? List.of() : List.of(noHeight + " of the " + summits.size() + " summits in " + source
-                    + " have no elevation and are left out (a summit is placed by its height; e.g. "
-                    + summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).findFirst().get().name() + ")");
+            List<Summit> noHeight = summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).toList();
+            return noHeight.isEmpty() ? List.of() : List.of(noHeight.size() + " of the " + summits.size() + " summits in "
+                    + source + " have no elevation and are left out (a summit is placed by its height; e.g. "
+                    + noHeight.get(0).name() + ")");
         }
         return List.of("no summits in " + source + (skipped.isEmpty() ? ""
                 : " (all " + skipped.size() + " entries were skipped as bad)"));

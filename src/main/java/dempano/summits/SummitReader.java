@@ -59,7 +59,6 @@ import org.apache.commons.csv.CSVRecord;
  */
 public final class SummitReader {
     /** A plain decimal number: no hex, no type suffix, no NaN or Infinity. */
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][+-]?\\d+)?");
     /** Any line ending: {@code \r\n}, {@code \n} or a lone {@code \r}. */
     private static final Pattern LINE_BREAK = Pattern.compile("\r\n|\r|\n");
     private static final String HEADER_RULE = "name, lat/latitude, lon/lng/long/longitude and optionally"
@@ -404,13 +403,13 @@ public final class SummitReader {
     }
 
     static boolean isDecimal(String s) {
-        return DECIMAL.matcher(s.strip()).matches();
+        return dempano.util.Decimals.isPlain(s.strip());
     }
 
     /** A plain decimal number (see the class comment); anything else is a bad value named by {@code what}. */
     static double number(String s, String what) {
         String t = s.strip();
-        if (!DECIMAL.matcher(t).matches()) {
+        if (!dempano.util.Decimals.isPlain(t)) {
             throw new IllegalArgumentException("bad " + what + " '" + s + "'" + (t.isEmpty() ? " (empty)" : " (want a decimal number)"));
         }
         double v = Double.parseDouble(t);

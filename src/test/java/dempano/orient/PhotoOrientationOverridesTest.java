@@ -60,12 +60,12 @@ class PhotoOrientationOverridesTest {
             PhotoOverrides.HFOV, PhotoOverrides.OFFSET}) {
             assertFalse(all.contains(flag), flag + " named in\n" + all);
         }
-        assertTrue(lines.contains("heading 235.5° " + PhotoOrientation.ESTIMATED), all);
-        assertTrue(lines.contains("pitch 1.25° " + PhotoOrientation.ESTIMATED), all);
-        assertTrue(lines.contains("roll -4° " + PhotoOrientation.ESTIMATED), all);
-        assertTrue(lines.contains("standing on the DEM corrected by 12.5 m (" + PhotoOrientation.ESTIMATED + ")"), all);
+        assertTrue(lines.contains("heading 235.5° " + PhotoMetadata.ESTIMATED), all);
+        assertTrue(lines.contains("pitch 1.25° " + PhotoMetadata.ESTIMATED), all);
+        assertTrue(lines.contains("roll -4° " + PhotoMetadata.ESTIMATED), all);
+        assertTrue(lines.contains("standing on the DEM corrected by 12.5 m (" + PhotoMetadata.ESTIMATED + ")"), all);
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("focal length ") && l.contains("field of view of 60°")
-                && l.endsWith(PhotoOrientation.ESTIMATED)), all);
+                && l.endsWith(PhotoMetadata.ESTIMATED)), all);
         assertEquals(12.5, c.pose().offsetMetres(), 0);
         // Before the estimate the placeholders are the lines that naming them changes (the job leaves them out of its log).
         List<String> before = m.resolve(open.placeholders(m, PhotoOverrides.NONE), Double.NaN,
@@ -106,7 +106,7 @@ class PhotoOrientationOverridesTest {
         String all = String.join("\n", c.provenance());
         assertTrue(c.provenance().contains("pitch 2° from " + PhotoOverrides.PITCH), all);
         assertTrue(c.provenance().contains("standing on the DEM corrected by 3 m (" + PhotoOverrides.OFFSET + ")"), all);
-        assertTrue(c.provenance().contains("heading 100° " + PhotoOrientation.ESTIMATED), all);
-        assertTrue(c.provenance().contains("roll 1.5° " + PhotoOrientation.ESTIMATED), all);
+        assertTrue(c.provenance().contains("heading 100° " + PhotoMetadata.ESTIMATED), all);
+        assertTrue(c.provenance().contains("roll 1.5° " + PhotoMetadata.ESTIMATED), all);
     }
 }

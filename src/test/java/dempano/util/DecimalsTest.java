@@ -1,0 +1,16 @@
+package dempano.util;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class DecimalsTest {
+    @ParameterizedTest(name = "''{0}'' → {1}")
+    @CsvSource({"46, true", "-46.5, true", "+.5, true", "5., true", "1e3, true", "4.049E+3, true", "1e999, true",
+        "0x1p5, false", "0x2B, false", "46d, false", "43.8f, false", "100D, false", "NaN, false", "Infinity, false",
+        "4_6, false", "'46,5', false", "'', false", "' 46', false", "+-4, false", "., false", "1e, false", "e5, false"})
+    void onlyPlainDecimalsAreTaken(String text, boolean plain) {
+        assertEquals(plain, Decimals.isPlain(text));
+    }
+}
