@@ -87,6 +87,11 @@ public final class PanoramaRenderer implements AutoCloseable {
         }
     }
 
+    /** The DEM this renderer draws (for looking up heights beside a render, e.g. summits without one). */
+    public DemSource dem() {
+        return dem;
+    }
+
     /** Name of the CPU reference renderer, as metadata reports it. */
     public static final String REFERENCE_RENDERER = "dempano CPU reference (horizon sweep, double precision)";
 

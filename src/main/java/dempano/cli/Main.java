@@ -287,9 +287,7 @@ public final class Main implements Callable<Integer> {
             for (String skipped : summitList.skipped()) {
                 System.err.println("  summit list " + summitsFile + ": skipped " + skipped);
             }
-            for (String warning : summitList.warnings()) {
-                System.err.println("  warning: " + warning);
-            }
+            // Its warnings are printed once the summits without a height are placed on the DEM (after rendering).
         }
         if (repeat < 1 || repeat > 1000) {
             throw new IllegalArgumentException("--repeat must be in 1..1000, got " + repeat);
@@ -361,8 +359,12 @@ public final class Main implements Callable<Integer> {
             for (String w : p.metadata().warnings()) {
                 System.err.println("  warning: " + w);
             }
-            java.util.List<dempano.summits.SummitSighting> sightings = summitList == null ? null
-                    : dempano.summits.SummitProjector.withDem(p.summits(summitList), dem);
+            java.util.List<dempano.summits.SummitSighting> sightings = null;
+            if (summitList != null) {
+                dempano.summits.SummitList placed = dempano.summits.SummitProjector.placedOnDem(summitList, dem, p.metadata());
+                dempano.summits.SummitProjector.warnings(placed, p.metadata()).forEach(w -> System.err.println("  warning: " + w));
+                sightings = dempano.summits.SummitProjector.withDem(p.summits(placed), dem);
+            }
             long beforeWriting = System.nanoTime();
             files = PanoramaWriter.stage(set, p, new PanoramaWriter.Options(panorama.pfm, sightings, labelOptions));
             set.commit();

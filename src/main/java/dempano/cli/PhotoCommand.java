@@ -122,9 +122,7 @@ public final class PhotoCommand implements Callable<Integer> {
             java.nio.file.Files.createDirectories(outParent);
         }
         SummitList summits = summitsFile == null ? null : dempano.summits.SummitReader.read(summitsFile, false);
-        if (summits != null) {
-            summits.warnings().forEach(w -> System.err.println("  warning: " + w));
-        }
+        // Its warnings come from the job, once the summits without a height are placed on the DEM.
         PhotoJob.Input input = new PhotoJob.Input(image, overrides, widthPx, heightPx, ranges(), settings, summits, out);
         dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(demDirs, fill, w -> System.err.println("  warning: " + w));
         PhotoJob.Result done;

@@ -161,8 +161,7 @@ public final class CameraWriter {
                 g.setColor(s.visible() ? Color.YELLOW : Color.LIGHT_GRAY);
                 g.drawOval((int) Math.round(x) - 6, (int) Math.round(y) - 6, 12, 12);
                 if (s.visible()) {
-                    String label = String.format(java.util.Locale.ROOT, "%s %.0f m · %.1f km", s.summit().name(),
-                            s.summit().elevationMetres(), s.slantMetres() / 1000);
+                    String label = SummitWriter.text(s);
                     g.drawString(label, (int) Math.round(x) + 9, (int) Math.round(y) - 9);
                 }
             }

@@ -98,6 +98,7 @@ public final class SummitWriter {
             o.addProperty("lat", s.summit().latDeg());
             o.addProperty("lon", s.summit().lonDeg());
             o.addProperty("elevationMetres", s.summit().elevationMetres());
+            o.addProperty("elevationFromDem", s.summit().elevationFromDem());
             o.addProperty("azimuthDeg", s.azimuthDeg());
             o.addProperty("elevationAngleDeg", s.elevationAngleDeg());
             o.addProperty("pixelX", s.pixelX());
@@ -112,7 +113,8 @@ public final class SummitWriter {
             a.add(o);
         }
         JsonObject root = new JsonObject();
-        root.addProperty("note", "mapDistanceMetres: distance-map value at the summit's pixel (null: sky or outside);"
+        root.addProperty("note", "elevationFromDem: the list gave no height, elevationMetres is the DEM's there;"
+                + " mapDistanceMetres: distance-map value at the summit's pixel (null: sky or outside);"
                 + " seenDistanceMetres: terrain seen at the summit within the tolerance window (null: none);"
                 + " demHeightMetres: the DEM's height at the summit's position (null: not looked up);"
                 + " inFilledVoid: the DEM had a void there, its height is interpolated");
@@ -130,17 +132,17 @@ public final class SummitWriter {
 
     static String csv(List<SummitSighting> sightings) {
         StringBuilder b = new StringBuilder("name,lat,lon,elevation_m,azimuth_deg,elevation_angle_deg,pixel_x,pixel_y,"
-                + "slant_m,ground_m,map_distance_m,seen_distance_m,visible,dem_height_m,in_filled_void\n");
+                + "slant_m,ground_m,map_distance_m,seen_distance_m,visible,dem_height_m,in_filled_void,elevation_from_dem\n");
         for (SummitSighting s : sightings) {
             String name = s.summit().name();
             if (name.contains(",") || name.contains("\"") || name.contains("\n") || name.contains("\r")) {
                 name = "\"" + name.replace("\"", "\"\"") + "\"";
             }
-            b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s,%s,%s%n", name,
+            b.append(String.format(Locale.ROOT, "%s,%.6f,%.6f,%.0f,%.4f,%.4f,%.2f,%.2f,%.1f,%.1f,%s,%s,%s,%s,%s,%s%n", name,
                     s.summit().latDeg(), s.summit().lonDeg(), s.summit().elevationMetres(), s.azimuthDeg(),
                     s.elevationAngleDeg(), s.pixelX(), s.pixelY(), s.slantMetres(), s.groundMetres(),
                     csvNumber(s.mapDistanceMetres()), csvNumber(s.seenDistanceMetres()), s.visible(),
-                    csvNumber(s.demHeightMetres()), s.inFilledVoid()));
+                    csvNumber(s.demHeightMetres()), s.inFilledVoid(), s.summit().elevationFromDem()));
         }
         return b.toString();
     }
@@ -229,8 +231,9 @@ public final class SummitWriter {
         return chosen;
     }
 
+    /** A label's text: "NAME 2927 m · 12.3 km", "NAME ~1912 m · …" where the height is the DEM's (no height in the list). */
     static String text(SummitSighting s) {
-        return String.format(Locale.ROOT, "%s %.0f m · %.1f km", s.summit().name(), s.summit().elevationMetres(),
-                s.slantMetres() / 1000);
+        return String.format(Locale.ROOT, "%s %s%.0f m · %.1f km", s.summit().name(), s.summit().elevationFromDem() ? "~" : "",
+                s.summit().elevationMetres(), s.slantMetres() / 1000);
     }
 }

@@ -248,7 +248,12 @@ public final class PhotoJob {
             orientationJson = gson.toJson(json);
         }
         CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
-        List<SummitSighting> sightings = in.summits() == null ? null : SummitProjector.project(rendered, in.summits());
+        List<SummitSighting> sightings = null;
+        if (in.summits() != null) {
+            SummitList placed = SummitProjector.placedOnDem(in.summits(), renderer.dem(), rendered.metadata());
+            SummitProjector.warnings(placed, rendered.metadata()).forEach(w -> log.progress("warning: " + w));
+            sightings = SummitProjector.withDem(SummitProjector.project(rendered, placed), renderer.dem());
+        }
         try (OutputSet set = OutputSet.open(in.outPrefix())) {
             set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
             List<CameraWriter.ExtraFile> orientationFiles = orientationOverlay == null ? List.of() : List.of(

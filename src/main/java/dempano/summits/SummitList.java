@@ -24,19 +24,26 @@ public record SummitList(String source, List<Summit> summits, List<String> skipp
         return summits.size();
     }
 
+    /** This list with other summits (same source and skipped entries). */
+    public SummitList withSummits(List<Summit> replaced) {
+        return new SummitList(source, replaced, skipped);
+    }
+
     /**
      * What a user should be told about the list beyond the skipped entries, one sentence each without
      * a "warning:" prefix: an empty list ("no summits in FILE", with how many entries were skipped when all
-     * were), or summits without an elevation, which projection leaves out. Empty when there is nothing to say.
+     * were), or summits without an elevation in the list, which are placed at the DEM's height
+     * ({@link SummitProjector#placedOnDem}; {@link SummitProjector#warnings} adds those it could not place).
+     * Empty when there is nothing to say.
      */
     public List<String> warnings() {
-        if (!summits.isEmpty()) {
-            List<Summit> noHeight = summits.stream().filter(s -> Double.isNaN(s.elevationMetres())).toList();
-            return noHeight.isEmpty() ? List.of() : List.of(noHeight.size() + " of the " + summits.size() + " summits in "
-                    + source + " have no elevation and are left out (a summit is placed by its height; e.g. "
-                    + noHeight.get(0).name() + ")");
+        if (summits.isEmpty()) {
+            return List.of("no summits in " + source + (skipped.isEmpty() ? ""
+                    : " (all " + skipped.size() + " entries were skipped as bad)"));
         }
-        return List.of("no summits in " + source + (skipped.isEmpty() ? ""
-                : " (all " + skipped.size() + " entries were skipped as bad)"));
+        List<Summit> noHeight = summits.stream().filter(s -> s.elevationFromDem() || Double.isNaN(s.elevationMetres())).toList();
+        return noHeight.isEmpty() ? List.of() : List.of(noHeight.size() + " of the " + summits.size() + " summits in "
+                + source + " have no elevation (e.g. " + noHeight.get(0).name() + "): each is placed at the DEM's height"
+                + " at its position, a little low where the DEM flattens a summit");
     }
 }

@@ -32,6 +32,8 @@ public final class SummitProjector {
     public static final double HEIGHT_TOLERANCE_DOWN_METRES = 200;
     public static final double DISTANCE_TOLERANCE_METRES = 300;
     public static final double DISTANCE_TOLERANCE_FRACTION = 0.02;
+    /** A summit less than this far from the eye, horizontally, metres, has no direction: see {@link #atTheEye}. */
+    public static final double AT_EYE_METRES = 1;
 
     private SummitProjector() {
     }
@@ -67,14 +69,14 @@ public final class SummitProjector {
                 continue;
             }
             Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
-            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
-            if (chordGround > m.rangeMetres() * 1.01 + 1000) {
+            if (!inRange(foot, eyeFoot, m)) {
                 continue;
             }
+            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
             eye.toEnu(s.latDeg(), s.lonDeg(), s.elevationMetres() + refraction.liftMetres(chordGround), enu);
             double horizontal = Math.hypot(enu[0], enu[1]);
-            if (horizontal > m.rangeMetres() || horizontal < 1) {
-                continue;
+            if (horizontal > m.rangeMetres() || horizontal < AT_EYE_METRES) {
+                continue; // beyond the range, or the eye stands on it (atTheEye)
             }
             view.pixelOf(enu[0], enu[1], enu[2], px);
             if (Double.isNaN(px[0]) || px[0] < -1.5 || px[0] > w + 0.5 || px[1] < -1.5 || px[1] > h + 0.5) {
@@ -139,14 +141,14 @@ public final class SummitProjector {
                 continue; // no height: cannot be placed in elevation
             }
             Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
-            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
-            if (chordGround > m.rangeMetres() * 1.01 + 1000) {
+            if (!inRange(foot, eyeFoot, m)) {
                 continue;
             }
+            double chordGround = Refraction.groundDistanceBetweenFeetMetres(foot, eyeFoot);
             eye.toEnu(s.latDeg(), s.lonDeg(), s.elevationMetres() + refraction.liftMetres(chordGround), enu);
             double horizontal = Math.hypot(enu[0], enu[1]);
-            if (horizontal > m.rangeMetres() || horizontal < 1) {
-                continue; // beyond the range, or the eye stands on it
+            if (horizontal > m.rangeMetres() || horizontal < AT_EYE_METRES) {
+                continue; // beyond the range, or the eye stands on it (atTheEye)
             }
             double az = Math.toDegrees(Math.atan2(enu[0], enu[1]));
             if (az < 0) {
@@ -195,17 +197,105 @@ public final class SummitProjector {
      * @throws dempano.dem.DemException if a tile exists but cannot be read
      */
     public static List<SummitSighting> withDem(List<SummitSighting> sightings, dempano.dem.DemSource dem) {
+        DemLookup lookup = new DemLookup(dem);
         List<SummitSighting> out = new ArrayList<>(sightings.size());
-        java.util.Map<dempano.dem.TileId, java.util.Optional<dempano.dem.HgtTile>> tiles = new java.util.HashMap<>();
         for (SummitSighting s : sightings) {
             double lat = s.summit().latDeg(), lon = s.summit().lonDeg();
-            dempano.dem.TileId id = dempano.dem.TileId.containing(lat, lon);
-            java.util.Optional<dempano.dem.HgtTile> tile = tiles.computeIfAbsent(id, dem::tile);
-            out.add(tile.filter(t -> !t.entirelyVoid())
-                    .map(t -> s.withDem(t.heightAt(lat, lon), inFilledVoid(t, lat, lon)))
-                    .orElse(s));
+            out.add(lookup.tileAt(lat, lon).map(t -> s.withDem(t.heightAt(lat, lon), inFilledVoid(t, lat, lon))).orElse(s));
         }
         return out;
+    }
+
+    /**
+     * The list with every summit that has no elevation placed at the DEM's height at its position (bilinear between
+     * the four samples around it; {@link Summit#elevationFromDem()} true), so that it is projected rather than left
+     * out. Summits with an elevation, and those on a tile the DEM does not have (or an entirely void one), are kept
+     * as they are. The DEM's height is that of the terrain drawn there, so such a summit sits on the rendered
+     * surface; SRTM3 comes out some 40 m below a surveyed summit on valid data. Only summits within the range of
+     * {@code around} are looked up (as {@link #project} takes them), so a world list reads no tiles beyond it.
+     *
+     * @param around the render the summits will be projected into (its viewpoint and range)
+     * @throws dempano.dem.DemException if a tile exists but cannot be read
+     */
+    public static SummitList placedOnDem(SummitList list, dempano.dem.DemSource dem, PanoramaMetadata around) {
+        if (list.summits().stream().noneMatch(s -> Double.isNaN(s.elevationMetres()))) {
+            return list;
+        }
+        DemLookup lookup = new DemLookup(dem);
+        double[] eyeFoot = new double[3], foot = new double[3];
+        Ellipsoid.toEcef(around.latDeg(), around.lonDeg(), 0, eyeFoot);
+        List<Summit> out = new ArrayList<>(list.size());
+        for (Summit s : list.summits()) {
+            Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
+            double height = Double.isNaN(s.elevationMetres()) && inRange(foot, eyeFoot, around)
+                    ? lookup.tileAt(s.latDeg(), s.lonDeg()).map(t -> t.heightAt(s.latDeg(), s.lonDeg())).orElse(Double.NaN)
+                    : Double.NaN;
+            out.add(Double.isNaN(height) ? s : new Summit(s.name(), s.latDeg(), s.lonDeg(), height, true));
+        }
+        return list.withSummits(out);
+    }
+
+    /**
+     * The summits of the list that stand where the eye does (less than {@link #AT_EYE_METRES} from it horizontally):
+     * {@link #project} leaves them out, since they have no direction from the eye; a user who gave a summit's own
+     * coordinates as the viewpoint is told so.
+     */
+    public static List<Summit> atTheEye(PanoramaMetadata m, SummitList list) {
+        LocalFrame eye = new LocalFrame(m.latDeg(), m.lonDeg(), m.eyeAltitudeMetres());
+        double[] enu = new double[3];
+        List<Summit> out = new ArrayList<>();
+        for (Summit s : list.summits()) {
+            eye.toEnu(s.latDeg(), s.lonDeg(), Double.isNaN(s.elevationMetres()) ? 0 : s.elevationMetres(), enu);
+            if (Math.hypot(enu[0], enu[1]) < AT_EYE_METRES) {
+                out.add(s);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * What a user should be told before the list is projected into a render, one sentence each without a
+     * "warning:" prefix: the list's own {@link SummitList#warnings()}, the summits within the render's range that
+     * still have no height (no DEM tile under them, or before {@link #placedOnDem}), which are left out, and each
+     * summit {@link #atTheEye}.
+     */
+    public static List<String> warnings(SummitList list, PanoramaMetadata render) {
+        List<String> out = new ArrayList<>(list.warnings());
+        double[] eyeFoot = new double[3], foot = new double[3];
+        Ellipsoid.toEcef(render.latDeg(), render.lonDeg(), 0, eyeFoot);
+        List<Summit> unplaced = list.summits().stream().filter(s -> {
+            Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
+            return Double.isNaN(s.elevationMetres()) && inRange(foot, eyeFoot, render);
+        }).toList();
+        if (!unplaced.isEmpty()) {
+            out.add(unplaced.size() + " of them within range " + (unplaced.size() == 1 ? "has" : "have")
+                    + " no DEM height either and " + (unplaced.size() == 1 ? "is" : "are") + " left out (e.g. "
+                    + unplaced.get(0).name() + ")");
+        }
+        atTheEye(render, list).forEach(s -> out.add("summit " + s.name() + " is where the eye stands: it has no"
+                + " direction from there and is left out"));
+        return out;
+    }
+
+    /** Whether a summit's foot lies within the render's range of the eye's (as {@link #project} takes them). */
+    private static boolean inRange(double[] summitFoot, double[] eyeFoot, PanoramaMetadata render) {
+        return Refraction.groundDistanceBetweenFeetMetres(summitFoot, eyeFoot) <= render.rangeMetres() * 1.01 + 1000;
+    }
+
+    /** The DEM's tiles, each read once, for the lookups of one list. */
+    private static final class DemLookup {
+        private final dempano.dem.DemSource dem;
+        private final java.util.Map<dempano.dem.TileId, java.util.Optional<dempano.dem.HgtTile>> tiles = new java.util.HashMap<>();
+
+        DemLookup(dempano.dem.DemSource dem) {
+            this.dem = dem;
+        }
+
+        /** The tile with data at a position; empty for no tile or an entirely void one. */
+        java.util.Optional<dempano.dem.HgtTile> tileAt(double latDeg, double lonDeg) {
+            return tiles.computeIfAbsent(dempano.dem.TileId.containing(latDeg, lonDeg), dem::tile)
+                    .filter(t -> !t.entirelyVoid());
+        }
     }
 
     /** True if one of the four samples around a position (those bilinear interpolation uses) is a filled void. */

@@ -1,6 +1,7 @@
 package dempano.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.google.gson.JsonObject;
@@ -16,14 +17,23 @@ class SummitDemColumnsTest {
             new SummitSighting(new Summit("Schreckhorn", 46.59, 8.118, 4078), 250, 3, 10, 20, 30000, 29990, 30000, 30000,
                     true).withDem(3601.5, true),
             new SummitSighting(new Summit("Eggishorn", 46.43, 8.09, 2927), 200, 1, 30, 40, 40000, 39990, 40000, 40000,
-                    false));
+                    false),
+            new SummitSighting(new Summit("Unsurveyed", 46.5, 8.1, 2511.25, true), 210, 1, 30, 40, 40000, 39990, 40000,
+                    40000, true).withDem(2511.25, false));
 
     @Test
     void csvHasTheDemHeightAndTheVoidFlag() {
         String[] lines = SummitWriter.csv(SIGHTINGS).split("\n");
-        assertTrue(lines[0].endsWith(",visible,dem_height_m,in_filled_void"), lines[0]);
-        assertTrue(lines[1].endsWith(",true,3601.5,true"), lines[1]);
-        assertTrue(lines[2].endsWith(",false,,false"), lines[2]);
+        assertTrue(lines[0].endsWith(",visible,dem_height_m,in_filled_void,elevation_from_dem"), lines[0]);
+        assertTrue(lines[1].endsWith(",true,3601.5,true,false"), lines[1]);
+        assertTrue(lines[2].endsWith(",false,,false,false"), lines[2]);
+        assertTrue(lines[3].startsWith("Unsurveyed,46.500000,8.100000,2511,") && lines[3].endsWith(",true,2511.3,false,true"), lines[3]);
+    }
+
+    @Test
+    void aHeightFromTheDemIsMarkedInTheLabel() {
+        assertEquals("Schreckhorn 4078 m · 30.0 km", SummitWriter.text(SIGHTINGS.get(0)));
+        assertEquals("Unsurveyed ~2511 m · 40.0 km", SummitWriter.text(SIGHTINGS.get(2)));
     }
 
     @Test
@@ -36,5 +46,7 @@ class SummitDemColumnsTest {
         // Not looked up: left out (as the writer leaves out every value JSON cannot hold).
         assertTrue(second.get("demHeightMetres") == null || second.get("demHeightMetres").isJsonNull());
         assertEquals(false, second.get("inFilledVoid").getAsBoolean());
+        assertFalse(second.get("elevationFromDem").getAsBoolean());
+        assertTrue(root.getAsJsonArray("summits").get(2).getAsJsonObject().get("elevationFromDem").getAsBoolean());
     }
 }

@@ -72,6 +72,43 @@ class SummitProjectorTest {
     }
 
     @Test
+    void aSummitWithoutAHeightIsPlacedAtTheDemsHeightWithinRangeOnly() {
+        Panorama p;
+        dempano.dem.DemSource dem = Synthetic.dem(TERRAIN, 45, 7, 3, 3);
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            p = r.render(PanoramaRequest.at(EYE_LAT, EYE_LON).withRangeMetres(40_000)
+                    .withElevationRange(new ElevationRange(-5, 20, false)));
+        }
+        // A again without its height; one 111 km away on a tile the DEM has (beyond the range: not looked up);
+        // one where the eye stands.
+        SummitList list = SummitList.of("synthetic", List.of(new Summit("A", A_LAT, A_LON, 2500),
+                new Summit("A, no height", A_LAT, A_LON, Double.NaN), new Summit("far, no height", 47.5, 8.5, Double.NaN),
+                new Summit("here", EYE_LAT, EYE_LON, 2000)));
+        SummitList placed = SummitProjector.placedOnDem(list, dem, p.metadata());
+        Summit noHeight = placed.summits().get(1);
+        // A lies on a grid node: the DEM's height there is the cone's apex, 2500 m.
+        assertEquals(2500, noHeight.elevationMetres(), 0.01);
+        assertTrue(noHeight.elevationFromDem());
+        assertFalse(placed.summits().get(0).elevationFromDem());
+        assertTrue(Double.isNaN(placed.summits().get(2).elevationMetres()), "beyond the range: not placed");
+        assertEquals(list.summits().get(0), placed.summits().get(0));
+
+        List<SummitSighting> seen = p.summits(placed);
+        assertEquals(2, seen.size(), "A twice; the far one and the one at the eye are left out");
+        assertEquals(seen.get(0).pixelX(), seen.get(1).pixelX(), 1e-6);
+        assertEquals(seen.get(0).pixelY(), seen.get(1).pixelY(), 1e-3);
+        assertTrue(seen.get(1).visible(), seen.get(1).toString());
+        String listWarning = "2 of the 4 summits in synthetic have no elevation (e.g. A, no height): each is placed at"
+                + " the DEM's height at its position, a little low where the DEM flattens a summit";
+        String atTheEye = "summit here is where the eye stands: it has no direction from there and is left out";
+        assertEquals(List.of(listWarning, atTheEye), SummitProjector.warnings(placed, p.metadata()));
+        // Not placed: the one within range is said to be left out (the far one, beyond the range, is not named).
+        assertEquals(List.of(listWarning, "1 of them within range has no DEM height either and is left out (e.g. A, no height)",
+                atTheEye),
+                SummitProjector.warnings(list, p.metadata()));
+    }
+
+    @Test
     void alpesMaritimesSummitsFromTheSurveyList() throws Exception {
         SummitList alps = SummitReader.read(SharedData.require("peaks/alps.txt"), false);
         Panorama p;

@@ -64,8 +64,8 @@ class SummitReaderTest {
         // Projection places a summit by its height: one without is left out, which was silent.
         SummitList l = SummitReader.csv("p.csv", "name,lat,lon,ele\nNoHeight,46.55,8.55,\nOK,46.56,8.55,2400\n", false);
         assertEquals(2, l.size());
-        assertEquals(List.of("1 of the 2 summits in p.csv have no elevation and are left out (a summit is placed by its"
-                + " height; e.g. NoHeight)"), l.warnings());
+        assertEquals(List.of("1 of the 2 summits in p.csv have no elevation (e.g. NoHeight): each is placed at the DEM's"
+                + " height at its position, a little low where the DEM flattens a summit"), l.warnings());
     }
 
     @Test
