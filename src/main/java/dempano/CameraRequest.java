@@ -24,12 +24,7 @@ public record CameraRequest(CameraIntrinsics intrinsics, CameraPose pose, Panora
         }
         // The settings' position is the pose's, so that every value a render reads agrees with it.
         PanoramaRequest s = settings.latDeg() == pose.latDeg() && settings.lonDeg() == pose.lonDeg() ? settings
-                : new PanoramaRequest(pose.latDeg(), pose.lonDeg(), settings.offsetMetres(), settings.altitudeMetres(),
-                settings.eyeHeightMetres(), settings.rangeMetres(), settings.pixelsPerDegree(), settings.elevationRange(),
-                settings.refraction(), settings.depthMode(), settings.layers(), settings.nearMetres(),
-                settings.supersampling(), settings.views(), settings.missingTiles(), settings.lodErrorPx(),
-                settings.colour(), settings.distance(), settings.snapToSummitMetres(), settings.clearViewMetres(),
-                settings.exactDistances());
+                : settings.movedTo(pose.latDeg(), pose.lonDeg());
         settings = s.withOffsetMetres(pose.offsetMetres()).withAltitudeMetres(pose.altitudeMetres())
                 .withEyeHeightMetres(pose.cameraHeightMetres());
     }

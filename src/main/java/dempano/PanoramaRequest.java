@@ -7,210 +7,381 @@ import dempano.geo.Viewpoint;
 import dempano.panorama.DepthMode;
 import dempano.panorama.ElevationRange;
 import dempano.panorama.Layer;
+import dempano.panorama.PanoramaGeometry;
 import dempano.panorama.ViewLayout;
+import dempano.terrain.LevelOfDetail;
 import java.util.EnumSet;
+import java.util.Objects;
 import java.util.Set;
 
 /**
- * What to render. Start from {@link #at(double, double)} (all defaults) and adjust with the
- * {@code with…} methods. Immutable; every value is checked when the request is made.
+ * What to render: where the eye stands ({@link Standpoint}), what the panorama covers ({@link Coverage}), how the GL
+ * path draws its views ({@link ViewSettings}) and what it computes ({@link Products}). Start from
+ * {@link #at(double, double)} (all defaults) and adjust with the {@code with…} methods; every value is also read
+ * directly ({@link #latDeg()}, {@link #rangeMetres()}, …). Immutable; every value is checked when the request is made,
+ * each group on its own and then what one group asks of another (layers need distances; the views must fit the
+ * panorama's grid).
  *
- * @param latDeg            viewpoint latitude, degrees [-90, 90]
- * @param lonDeg            viewpoint longitude, degrees [-180, 180]
- * @param offsetMetres      signed correction to the DEM height at the viewpoint (default 0)
- * @param altitudeMetres    absolute standing altitude, metres above sea level; NaN (default) = from the DEM
- * @param eyeHeightMetres   eye above the standing altitude (default 2 m)
- * @param rangeMetres       range of sight (default 100 km)
- * @param pixelsPerDegree   panorama resolution, pixels per degree in (0, 200] with 360·ppd a whole number
- *                          (default 20); normalized as {@link dempano.panorama.PanoramaGeometry#checkedPixelsPerDegree},
- *                          so the request and the panorama's geometry hold the same value
- * @param elevationRange    elevation angles covered (default -30°:30°)
- * @param refraction        refraction coefficient (default k = 0.13)
- * @param depthMode         how distances are obtained (default {@link DepthMode#SHADER_RANGE})
- * @param layers            extra per-pixel layers (default none)
- * @param nearMetres        near plane (default 1 m)
- * @param supersampling     view pixels per panorama pixel, linear (default 1)
- * @param views             perspective views (default 8)
- * @param missingTiles      what a missing tile means (default {@link MissingTilePolicy#AUTO}: sea beside data, an
- *                          error for no data at all or none under the viewpoint without an altitude)
- * @param lodErrorPx        bound on the screen error of simplified distant terrain, panorama pixels
- *                          (default {@link dempano.terrain.LevelOfDetail#DEFAULT_MAX_ERROR_PX}; 0 = full
- *                          resolution everywhere). The GL path only: the reference is always exact.
- * @param colour            compute the colour image (default true); false renders distances only,
- *                          skipping colour shading, read-back and stitching
- * @param distance          compute the distance map (default true); false renders colour only,
- *                          skipping depth linearization and the distance interpolation (the
- *                          silhouette lines and an auto elevation range then use the nearest view
- *                          sample's range). Layers and summits need distances.
- * @param snapToSummitMetres radius, metres, within which the viewpoint moves to the highest DEM sample
- *                          ({@link dempano.geo.ViewpointAdjustment#highestWithin}); NaN (default) = stay
- * @param clearViewMetres   radius, metres, within which no terrain may rise above the eye's horizontal: the
- *                          eye is raised as far as needed ({@link dempano.geo.ViewpointAdjustment#clearViewEyeAltitudeMetres});
- *                          NaN (default) = no lift
+ * @param standpoint where the eye stands
+ * @param coverage   what the panorama covers, at which resolution, over which data
+ * @param viewSettings how the GL path draws the panorama's views (the CPU reference casts every pixel's ray: it uses none)
+ * @param products   what is computed
  */
-public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
-                              double eyeHeightMetres, double rangeMetres, double pixelsPerDegree,
-                              ElevationRange elevationRange, Refraction refraction, DepthMode depthMode,
-                              Set<Layer> layers, double nearMetres, double supersampling, int views,
-                              MissingTilePolicy missingTiles, double lodErrorPx, boolean colour,
-                              boolean distance, double snapToSummitMetres, double clearViewMetres,
-                              boolean exactDistances) {
+public record PanoramaRequest(Standpoint standpoint, Coverage coverage, ViewSettings viewSettings, Products products) {
     public static final double DEFAULT_RANGE_METRES = 100_000;
     public static final double DEFAULT_PIXELS_PER_DEGREE = 20;
     public static final double DEFAULT_NEAR_METRES = 1;
 
+    /**
+     * Where the eye stands.
+     *
+     * @param latDeg             viewpoint latitude, degrees [-90, 90]
+     * @param lonDeg             viewpoint longitude, degrees [-180, 180]
+     * @param offsetMetres       signed correction to the DEM height at the viewpoint, within ±1e6 (default 0)
+     * @param altitudeMetres     absolute standing altitude, metres above sea level within ±1e6; NaN (default) = from
+     *                           the DEM
+     * @param eyeHeightMetres    eye above the standing altitude, [0, 1e6) (default 2 m)
+     * @param snapToSummitMetres radius, metres, within which the viewpoint moves to the highest DEM sample
+     *                           ({@link dempano.geo.ViewpointAdjustment#highestWithin}); NaN (default) = stay
+     * @param clearViewMetres    radius, metres, within which no terrain may rise above the eye's horizontal: the eye is
+     *                           raised as far as needed ({@link dempano.geo.ViewpointAdjustment#clearViewEyeAltitudeMetres});
+     *                           NaN (default) = no lift
+     */
+    public record Standpoint(double latDeg, double lonDeg, double offsetMetres, double altitudeMetres,
+                             double eyeHeightMetres, double snapToSummitMetres, double clearViewMetres) {
+        public Standpoint {
+            TileSelection.checkCoordinates(latDeg, lonDeg);
+            if (!(Math.abs(offsetMetres) < 1e6)) {
+                throw new IllegalArgumentException("offset must be a number of metres within ±1e6, got " + offsetMetres);
+            }
+            if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
+                throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), got " + altitudeMetres);
+            }
+            if (!(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
+                throw new IllegalArgumentException("eye height must be a number of metres in [0, 1e6), got " + eyeHeightMetres);
+            }
+            checkRadius(snapToSummitMetres, "snap-to-summit radius");
+            checkRadius(clearViewMetres, "clear-view radius");
+        }
+
+        /** The default standpoint at a coordinate: on the DEM, the eye 2 m up, not moved. */
+        public static Standpoint at(double latDeg, double lonDeg) {
+            return new Standpoint(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES, Double.NaN, Double.NaN);
+        }
+
+        /** This standpoint at another coordinate, everything else kept. */
+        public Standpoint movedTo(double latDeg, double lonDeg) {
+            return new Standpoint(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, snapToSummitMetres, clearViewMetres);
+        }
+
+        private static void checkRadius(double radiusMetres, String what) {
+            if (!Double.isNaN(radiusMetres)
+                    && !(radiusMetres > 0 && radiusMetres <= dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES)) {
+                throw new IllegalArgumentException(what + " must be in (0, "
+                        + (long) dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES + "] metres, got " + radiusMetres);
+            }
+        }
+    }
+
+    /**
+     * What the panorama covers.
+     *
+     * @param rangeMetres     range of sight, metres [100, {@link TileSelection#MAX_RANGE_METRES}] (default 100 km)
+     * @param pixelsPerDegree panorama resolution, pixels per degree in (0, 200] with 360·ppd a whole number (default
+     *                        20); normalized as {@link PanoramaGeometry#checkedPixelsPerDegree}, so the request and the
+     *                        panorama's geometry hold the same value
+     * @param elevationRange  elevation angles covered (default -30°:30°)
+     * @param refraction      refraction coefficient (default k = 0.13)
+     * @param missingTiles    what a missing tile means (default {@link MissingTilePolicy#AUTO}: sea beside data, an
+     *                        error for no data at all or none under the viewpoint without an altitude)
+     */
+    public record Coverage(double rangeMetres, double pixelsPerDegree, ElevationRange elevationRange,
+                           Refraction refraction, MissingTilePolicy missingTiles) {
+        public static final Coverage DEFAULT = new Coverage(DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE,
+                ElevationRange.DEFAULT, Refraction.STANDARD, MissingTilePolicy.AUTO);
+
+        public Coverage {
+            pixelsPerDegree = PanoramaGeometry.checkedPixelsPerDegree(pixelsPerDegree);
+            if (!(rangeMetres >= 100 && rangeMetres <= TileSelection.MAX_RANGE_METRES)) {
+                throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000
+                        + " km, got " + rangeMetres / 1000 + " km");
+            }
+            Objects.requireNonNull(elevationRange);
+            Objects.requireNonNull(refraction);
+            Objects.requireNonNull(missingTiles);
+        }
+    }
+
+    /**
+     * How the GL path draws the panorama's views.
+     *
+     * @param depthMode     how distances are read from the views (default {@link DepthMode#SHADER_RANGE})
+     * @param nearMetres    near plane, metres in (0, 1000) (default 1 m; an upper bound, lowered where terrain comes
+     *                      nearer)
+     * @param supersampling view pixels per panorama pixel, linear (default 1)
+     * @param views         perspective views (default 8)
+     * @param lodErrorPx    bound on the screen error of simplified distant terrain, panorama pixels, [0, 100] (default
+     *                      {@link LevelOfDetail#DEFAULT_MAX_ERROR_PX}; 0 = full resolution everywhere)
+     */
+    public record ViewSettings(DepthMode depthMode, double nearMetres, double supersampling, int views,
+                               double lodErrorPx) {
+        public static final ViewSettings DEFAULT = new ViewSettings(DepthMode.SHADER_RANGE, DEFAULT_NEAR_METRES, 1,
+                ViewLayout.DEFAULT_VIEWS, LevelOfDetail.DEFAULT_MAX_ERROR_PX);
+
+        public ViewSettings {
+            Objects.requireNonNull(depthMode);
+            if (!(lodErrorPx >= 0 && lodErrorPx <= 100)) {
+                throw new IllegalArgumentException("level-of-detail error bound must be in [0, 100] pixels, got " + lodErrorPx);
+            }
+            if (!(nearMetres > 0 && nearMetres < 1000)) {
+                throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
+            }
+        }
+    }
+
+    /**
+     * What is computed.
+     *
+     * @param colour         the colour image (default true); false renders distances only, skipping colour shading,
+     *                       read-back and stitching
+     * @param distance       the distance map (default true); false renders colour only, skipping depth linearization
+     *                       and the distance interpolation (the silhouette lines and an auto elevation range then use
+     *                       the nearest view sample's range). Layers and summits need distances.
+     * @param exactDistances each pixel's distance along its own centre ray (default true; see
+     *                       {@link PanoramaRequest#withExactDistances})
+     * @param layers         extra per-pixel layers (default none)
+     */
+    public record Products(boolean colour, boolean distance, boolean exactDistances, Set<Layer> layers) {
+        public static final Products DEFAULT = new Products(true, true, true, EnumSet.noneOf(Layer.class));
+
+        public Products {
+            layers = Set.copyOf(layers);
+            if (!colour && !distance) {
+                throw new IllegalArgumentException("nothing to render: both colour and distance are switched off");
+            }
+            if (!distance && !layers.isEmpty()) {
+                throw new IllegalArgumentException("layers " + layers + " are computed from distances: they need the distance map");
+            }
+        }
+    }
+
     public PanoramaRequest {
-        TileSelection.checkCoordinates(latDeg, lonDeg);
-        pixelsPerDegree = dempano.panorama.PanoramaGeometry.checkedPixelsPerDegree(pixelsPerDegree);
-        if (!(Math.abs(offsetMetres) < 1e6)) {
-            throw new IllegalArgumentException("offset must be a number of metres within ±1e6, got " + offsetMetres);
-        }
-        if (!Double.isNaN(altitudeMetres) && !(Math.abs(altitudeMetres) < 1e6)) {
-            throw new IllegalArgumentException("altitude must be a number of metres within ±1e6 (above sea level), got " + altitudeMetres);
-        }
-        if (!(eyeHeightMetres >= 0 && eyeHeightMetres < 1e6)) {
-            throw new IllegalArgumentException("eye height must be a number of metres in [0, 1e6), got " + eyeHeightMetres);
-        }
-        if (!(rangeMetres >= 100 && rangeMetres <= TileSelection.MAX_RANGE_METRES)) {
-            throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000
-                    + " km, got " + rangeMetres / 1000 + " km");
-        }
-        if (!(lodErrorPx >= 0 && lodErrorPx <= 100)) {
-            throw new IllegalArgumentException("level-of-detail error bound must be in [0, 100] pixels, got " + lodErrorPx);
-        }
-        if (!(nearMetres > 0 && nearMetres < 1000)) {
-            throw new IllegalArgumentException("near plane must be in (0, 1000) metres, got " + nearMetres);
-        }
-        checkRadius(snapToSummitMetres, "snap-to-summit radius");
-        checkRadius(clearViewMetres, "clear-view radius");
-        layers = Set.copyOf(layers);
-        if (!colour && !distance) {
-            throw new IllegalArgumentException("nothing to render: both colour and distance are switched off");
-        }
-        if (!distance && !layers.isEmpty()) {
-            throw new IllegalArgumentException("layers " + layers + " are computed from distances: they need the distance map");
-        }
-        java.util.Objects.requireNonNull(elevationRange);
-        java.util.Objects.requireNonNull(refraction);
-        java.util.Objects.requireNonNull(depthMode);
-        java.util.Objects.requireNonNull(missingTiles);
-        // Validates ppd, views and supersampling with clear messages.
-        ViewLayout.forPanorama(dempano.panorama.PanoramaGeometry.of(pixelsPerDegree, elevationRange.bottomDeg(),
-                elevationRange.topDeg()), views, supersampling);
+        Objects.requireNonNull(standpoint, "standpoint");
+        Objects.requireNonNull(coverage, "coverage");
+        Objects.requireNonNull(viewSettings, "viewSettings");
+        Objects.requireNonNull(products, "products");
+        // Validates ppd, the number of views and supersampling together, with clear messages.
+        ViewLayout.forPanorama(PanoramaGeometry.of(coverage.pixelsPerDegree(), coverage.elevationRange().bottomDeg(),
+                coverage.elevationRange().topDeg()), viewSettings.views(), viewSettings.supersampling());
     }
 
     /** A request with every default at a coordinate. */
     public static PanoramaRequest at(double latDeg, double lonDeg) {
-        return new PanoramaRequest(latDeg, lonDeg, 0, Double.NaN, Viewpoint.DEFAULT_EYE_HEIGHT_METRES,
-                DEFAULT_RANGE_METRES, DEFAULT_PIXELS_PER_DEGREE, ElevationRange.DEFAULT, Refraction.STANDARD,
-                DepthMode.SHADER_RANGE, EnumSet.noneOf(Layer.class), DEFAULT_NEAR_METRES, 1, ViewLayout.DEFAULT_VIEWS,
-                MissingTilePolicy.AUTO, dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, true, true, Double.NaN, Double.NaN, true);
+        return new PanoramaRequest(Standpoint.at(latDeg, lonDeg), Coverage.DEFAULT, ViewSettings.DEFAULT, Products.DEFAULT);
     }
 
+    // The values, read directly.
+
+    public double latDeg() {
+        return standpoint.latDeg();
+    }
+
+    public double lonDeg() {
+        return standpoint.lonDeg();
+    }
+
+    public double offsetMetres() {
+        return standpoint.offsetMetres();
+    }
+
+    public double altitudeMetres() {
+        return standpoint.altitudeMetres();
+    }
+
+    public double eyeHeightMetres() {
+        return standpoint.eyeHeightMetres();
+    }
+
+    public double snapToSummitMetres() {
+        return standpoint.snapToSummitMetres();
+    }
+
+    public double clearViewMetres() {
+        return standpoint.clearViewMetres();
+    }
+
+    public double rangeMetres() {
+        return coverage.rangeMetres();
+    }
+
+    public double pixelsPerDegree() {
+        return coverage.pixelsPerDegree();
+    }
+
+    public ElevationRange elevationRange() {
+        return coverage.elevationRange();
+    }
+
+    public Refraction refraction() {
+        return coverage.refraction();
+    }
+
+    public MissingTilePolicy missingTiles() {
+        return coverage.missingTiles();
+    }
+
+    public DepthMode depthMode() {
+        return viewSettings.depthMode();
+    }
+
+    public double nearMetres() {
+        return viewSettings.nearMetres();
+    }
+
+    public double supersampling() {
+        return viewSettings.supersampling();
+    }
+
+    public int views() {
+        return viewSettings.views();
+    }
+
+    public double lodErrorPx() {
+        return viewSettings.lodErrorPx();
+    }
+
+    public boolean colour() {
+        return products.colour();
+    }
+
+    public boolean distance() {
+        return products.distance();
+    }
+
+    public boolean exactDistances() {
+        return products.exactDistances();
+    }
+
+    public Set<Layer> layers() {
+        return products.layers();
+    }
+
+    // Whole groups.
+
+    public PanoramaRequest withStandpoint(Standpoint v) {
+        return new PanoramaRequest(v, coverage, viewSettings, products);
+    }
+
+    public PanoramaRequest withCoverage(Coverage v) {
+        return new PanoramaRequest(standpoint, v, viewSettings, products);
+    }
+
+    public PanoramaRequest withViewSettings(ViewSettings v) {
+        return new PanoramaRequest(standpoint, coverage, v, products);
+    }
+
+    public PanoramaRequest withProducts(Products v) {
+        return new PanoramaRequest(standpoint, coverage, viewSettings, v);
+    }
+
+    /** This request at another coordinate: everything else, the standpoint's offset, altitude and eye height too, kept. */
+    public PanoramaRequest movedTo(double latDeg, double lonDeg) {
+        return withStandpoint(standpoint.movedTo(latDeg, lonDeg));
+    }
+
+    // Single values.
+
     public PanoramaRequest withOffsetMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, v, altitudeMetres, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Standpoint s = standpoint;
+        return withStandpoint(new Standpoint(s.latDeg(), s.lonDeg(), v, s.altitudeMetres(), s.eyeHeightMetres(),
+                s.snapToSummitMetres(), s.clearViewMetres()));
     }
 
     public PanoramaRequest withAltitudeMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, v, eyeHeightMetres, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Standpoint s = standpoint;
+        return withStandpoint(new Standpoint(s.latDeg(), s.lonDeg(), s.offsetMetres(), v, s.eyeHeightMetres(),
+                s.snapToSummitMetres(), s.clearViewMetres()));
     }
 
     public PanoramaRequest withEyeHeightMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, v, rangeMetres, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Standpoint s = standpoint;
+        return withStandpoint(new Standpoint(s.latDeg(), s.lonDeg(), s.offsetMetres(), s.altitudeMetres(), v,
+                s.snapToSummitMetres(), s.clearViewMetres()));
+    }
+
+    /** Snap the viewpoint to the highest DEM sample within this radius, metres; NaN = off (see {@link Standpoint}). */
+    public PanoramaRequest withSnapToSummitMetres(double v) {
+        Standpoint s = standpoint;
+        return withStandpoint(new Standpoint(s.latDeg(), s.lonDeg(), s.offsetMetres(), s.altitudeMetres(),
+                s.eyeHeightMetres(), v, s.clearViewMetres()));
+    }
+
+    /** Raise the eye above all terrain within this radius, metres; NaN = off (see {@link Standpoint}). */
+    public PanoramaRequest withClearViewMetres(double v) {
+        Standpoint s = standpoint;
+        return withStandpoint(new Standpoint(s.latDeg(), s.lonDeg(), s.offsetMetres(), s.altitudeMetres(),
+                s.eyeHeightMetres(), s.snapToSummitMetres(), v));
     }
 
     public PanoramaRequest withRangeMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, v, pixelsPerDegree,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Coverage c = coverage;
+        return withCoverage(new Coverage(v, c.pixelsPerDegree(), c.elevationRange(), c.refraction(), c.missingTiles()));
     }
 
     public PanoramaRequest withPixelsPerDegree(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres, v,
-                elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Coverage c = coverage;
+        return withCoverage(new Coverage(c.rangeMetres(), v, c.elevationRange(), c.refraction(), c.missingTiles()));
     }
 
     public PanoramaRequest withElevationRange(ElevationRange v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, v, refraction, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Coverage c = coverage;
+        return withCoverage(new Coverage(c.rangeMetres(), c.pixelsPerDegree(), v, c.refraction(), c.missingTiles()));
     }
 
     public PanoramaRequest withRefraction(Refraction v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, v, depthMode, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    public PanoramaRequest withDepthMode(DepthMode v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, v, layers, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    public PanoramaRequest withLayers(Set<Layer> v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, v, nearMetres, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    public PanoramaRequest withNearMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, v, supersampling, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    public PanoramaRequest withSupersampling(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, v, views, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    public PanoramaRequest withViews(int v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, v, missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Coverage c = coverage;
+        return withCoverage(new Coverage(c.rangeMetres(), c.pixelsPerDegree(), c.elevationRange(), v, c.missingTiles()));
     }
 
     public PanoramaRequest withMissingTiles(MissingTilePolicy v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views, v, lodErrorPx, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Coverage c = coverage;
+        return withCoverage(new Coverage(c.rangeMetres(), c.pixelsPerDegree(), c.elevationRange(), c.refraction(), v));
+    }
+
+    public PanoramaRequest withDepthMode(DepthMode v) {
+        ViewSettings s = viewSettings;
+        return withViewSettings(new ViewSettings(v, s.nearMetres(), s.supersampling(), s.views(), s.lodErrorPx()));
+    }
+
+    public PanoramaRequest withNearMetres(double v) {
+        ViewSettings s = viewSettings;
+        return withViewSettings(new ViewSettings(s.depthMode(), v, s.supersampling(), s.views(), s.lodErrorPx()));
+    }
+
+    public PanoramaRequest withSupersampling(double v) {
+        ViewSettings s = viewSettings;
+        return withViewSettings(new ViewSettings(s.depthMode(), s.nearMetres(), v, s.views(), s.lodErrorPx()));
+    }
+
+    public PanoramaRequest withViews(int v) {
+        ViewSettings s = viewSettings;
+        return withViewSettings(new ViewSettings(s.depthMode(), s.nearMetres(), s.supersampling(), v, s.lodErrorPx()));
     }
 
     public PanoramaRequest withLodErrorPx(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, v, colour, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        ViewSettings s = viewSettings;
+        return withViewSettings(new ViewSettings(s.depthMode(), s.nearMetres(), s.supersampling(), s.views(), v));
     }
 
     public PanoramaRequest withColour(boolean v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, v, distance, snapToSummitMetres, clearViewMetres, exactDistances);
+        Products p = products;
+        return withProducts(new Products(v, p.distance(), p.exactDistances(), p.layers()));
     }
 
-    /** Whether to compute the distance map; false = colour only (see the record's Javadoc). */
+    /** Whether to compute the distance map; false = colour only (see {@link Products}). */
     public PanoramaRequest withDistance(boolean v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, colour, v, snapToSummitMetres, clearViewMetres, exactDistances);
-    }
-
-    /** Snap the viewpoint to the highest DEM sample within this radius, metres; NaN = off (see the record's Javadoc). */
-    public PanoramaRequest withSnapToSummitMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, colour, distance, v, clearViewMetres, exactDistances);
-    }
-
-    /** Raise the eye above all terrain within this radius, metres; NaN = off (see the record's Javadoc). */
-    public PanoramaRequest withClearViewMetres(double v) {
-        return new PanoramaRequest(latDeg, lonDeg, offsetMetres, altitudeMetres, eyeHeightMetres, rangeMetres,
-                pixelsPerDegree, elevationRange, refraction, depthMode, layers, nearMetres, supersampling, views,
-                missingTiles, lodErrorPx, colour, distance, snapToSummitMetres, v, exactDistances);
-    }
-
-    private static void checkRadius(double radiusMetres, String what) {
-        if (!Double.isNaN(radiusMetres)
-                && !(radiusMetres > 0 && radiusMetres <= dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES)) {
-            throw new IllegalArgumentException(what + " must be in (0, "
-                    + (long) dempano.geo.ViewpointAdjustment.MAX_RADIUS_METRES + "] metres, got " + radiusMetres);
-        }
+        Products p = products;
+        return withProducts(new Products(p.colour(), v, p.exactDistances(), p.layers()));
     }
 
     /**
@@ -221,9 +392,12 @@ public record PanoramaRequest(double latDeg, double lonDeg, double offsetMetres,
      * and at silhouettes, where a pixel takes a neighbouring sample's ray.
      */
     public PanoramaRequest withExactDistances(boolean v) {
-        PanoramaRequest r = this;
-        return new PanoramaRequest(r.latDeg, r.lonDeg, r.offsetMetres, r.altitudeMetres, r.eyeHeightMetres, r.rangeMetres,
-                r.pixelsPerDegree, r.elevationRange, r.refraction, r.depthMode, r.layers, r.nearMetres, r.supersampling,
-                r.views, r.missingTiles, r.lodErrorPx, r.colour, r.distance, r.snapToSummitMetres, r.clearViewMetres, v);
+        Products p = products;
+        return withProducts(new Products(p.colour(), p.distance(), v, p.layers()));
+    }
+
+    public PanoramaRequest withLayers(Set<Layer> v) {
+        Products p = products;
+        return withProducts(new Products(p.colour(), p.distance(), p.exactDistances(), v));
     }
 }

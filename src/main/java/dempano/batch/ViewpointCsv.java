@@ -392,10 +392,7 @@ public final class ViewpointCsv {
 
     /** The defaults request at another viewpoint (its coordinates checked). */
     static PanoramaRequest atViewpoint(PanoramaRequest d, double latDeg, double lonDeg) {
-        return new PanoramaRequest(latDeg, lonDeg, d.offsetMetres(), d.altitudeMetres(), d.eyeHeightMetres(), d.rangeMetres(),
-                d.pixelsPerDegree(), d.elevationRange(), d.refraction(), d.depthMode(), d.layers(), d.nearMetres(),
-                d.supersampling(), d.views(), d.missingTiles(), d.lodErrorPx(), d.colour(), d.distance(),
-                d.snapToSummitMetres(), d.clearViewMetres(), d.exactDistances());
+        return d.movedTo(latDeg, lonDeg);
     }
 
     /** Offsets at which lines start (a line ends at LF, CRLF or a lone CR). */

@@ -357,11 +357,7 @@ public final class PhotoJob {
      * altitude, eye height, summit snap, clear view) are a fresh request's, since the camera's pose places it.
      */
     static PanoramaRequest atCamera(PanoramaRequest d, double latDeg, double lonDeg) {
-        PanoramaRequest b = PanoramaRequest.at(latDeg, lonDeg);
-        return new PanoramaRequest(latDeg, lonDeg, b.offsetMetres(), b.altitudeMetres(), b.eyeHeightMetres(), d.rangeMetres(),
-                d.pixelsPerDegree(), d.elevationRange(), d.refraction(), d.depthMode(), d.layers(), d.nearMetres(),
-                d.supersampling(), d.views(), d.missingTiles(), d.lodErrorPx(), d.colour(), d.distance(),
-                b.snapToSummitMetres(), b.clearViewMetres(), d.exactDistances());
+        return d.withStandpoint(PanoramaRequest.Standpoint.at(latDeg, lonDeg));
     }
 
     private static byte[] pngBytes(BufferedImage image) throws IOException {
