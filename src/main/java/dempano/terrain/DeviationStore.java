@@ -23,8 +23,9 @@ import java.util.concurrent.ConcurrentHashMap;
  * changed tile, another DEM source, a void filled otherwise: other heights, other hashes, a miss, and
  * the patch is measured again and its entry replaced. What else the values depend on (the measurement's
  * code, {@link TerrainBuilder#PATCH_INTERVALS}, the levels) is in each file's header ({@link #FORMAT}):
- * a file of another format is ignored and rewritten. A file that cannot be read (truncated, corrupt) is
- * ignored the same way; one that cannot be written (a read-only folder, a full disk) leaves the run as
+ * a file of another format is ignored and rewritten. A file that cannot be read (truncated, corrupt: each ends
+ * with a CRC-32 of all its bytes, so a flipped bit in a stored value, which the heights' hashes do not cover, is
+ * caught too) is ignored the same way; one that cannot be written (a read-only folder, a full disk) leaves the run as
  * it would be without the store ({@link #lastWriteError()} says why). Files are replaced whole
  * (written aside, then renamed), so a reader sees a complete file, an old one or none; two processes
  * writing one file at once lose one's new entries, never correctness.
@@ -34,7 +35,7 @@ import java.util.concurrent.ConcurrentHashMap;
  */
 public final class DeviationStore {
     /** Bumped whenever what an entry holds, or how it is measured, changes. */
-    static final int FORMAT = 1;
+    static final int FORMAT = 2; // 2: a CRC-32 at the end
     private static final int MAGIC = 0x44504456; // "DPDV"
     /** Patches per group side. */
     private static final int GROUP = 16;
@@ -167,8 +168,9 @@ public final class DeviationStore {
     /** A group file's entries; empty when missing, unreadable or of another format. */
     private static Map<PatchKey, Entry> read(Path file) {
         Map<PatchKey, Entry> entries = new HashMap<>();
+        java.util.zip.CRC32 crc = new java.util.zip.CRC32();
         try (InputStream in = Files.newInputStream(file);
-             DataInputStream data = new DataInputStream(new BufferedInputStream(in))) {
+             DataInputStream data = new DataInputStream(new java.util.zip.CheckedInputStream(new BufferedInputStream(in), crc))) {
             if (data.readInt() != MAGIC || data.readInt() != FORMAT || data.readInt() != TerrainBuilder.PATCH_INTERVALS
                     || data.readInt() != valuesPerEntry()) {
                 return entries;
@@ -187,8 +189,9 @@ public final class DeviationStore {
                 }
                 read.put(k, new Entry(a, b, values));
             }
-            if (data.read() != -1) {
-                return entries; // trailing bytes: not a file this wrote
+            int computed = (int) crc.getValue();
+            if (data.readInt() != computed || data.read() != -1) {
+                return entries; // altered, or trailing bytes: not a file as this wrote it
             }
             return read;
         } catch (IOException | RuntimeException e) {
@@ -200,7 +203,8 @@ public final class DeviationStore {
     private static void write(Path file, Map<PatchKey, Entry> entries) throws IOException {
         Files.createDirectories(file.getParent());
         AtomicFiles.write(file, out -> {
-            DataOutputStream data = new DataOutputStream(out);
+            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+            DataOutputStream data = new DataOutputStream(new java.util.zip.CheckedOutputStream(out, crc));
             data.writeInt(MAGIC);
             data.writeInt(FORMAT);
             data.writeInt(TerrainBuilder.PATCH_INTERVALS);
@@ -215,6 +219,7 @@ public final class DeviationStore {
                     data.writeFloat(v);
                 }
             }
+            data.writeInt((int) crc.getValue());
             data.flush();
         });
     }

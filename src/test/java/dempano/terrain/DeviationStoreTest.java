@@ -75,35 +75,43 @@ class DeviationStoreTest {
     }
 
     @Test
-    void filesThatCannotBeReadAreIgnoredAndRewritten(@TempDir Path dir) throws IOException {
+    void filesThatCannotBeReadAreIgnoredAndRewritten(@TempDir Path root) throws IOException {
         DemSource plain = dem(0);
         TerrainBuilder.Terrain without = TerrainBuilderTest.build(plain, LAT, LON, RANGE, new DeviationCache());
-        DeviationStore first = DeviationStore.in(dir);
-        build(plain, first);
-        List<Path> files;
-        try (Stream<Path> s = Files.walk(dir)) {
-            files = s.filter(p -> p.toString().endsWith(".dev")).toList();
-        }
-        assertTrue(!files.isEmpty());
-        for (int i = 0; i < files.size(); i++) {
-            byte[] bytes = Files.readAllBytes(files.get(i));
-            switch (i % 3) {
-                case 0 -> Files.write(files.get(i), java.util.Arrays.copyOf(bytes, bytes.length / 2)); // truncated
-                case 1 -> Files.write(files.get(i), "not a deviation file".getBytes()); // foreign
-                default -> {
-                    bytes[7] ^= 1; // another format number
-                    Files.write(files.get(i), bytes);
+        for (String damage : List.of("truncated", "foreign", "one bit of a value", "another format")) {
+            Path dir = Files.createDirectory(root.resolve(damage.replace(' ', '-')));
+            build(plain, DeviationStore.in(dir));
+            List<Path> files;
+            try (Stream<Path> s = Files.walk(dir)) {
+                files = s.filter(p -> p.toString().endsWith(".dev")).toList();
+            }
+            assertTrue(!files.isEmpty());
+            for (Path f : files) {
+                byte[] bytes = Files.readAllBytes(f);
+                switch (damage) {
+                    case "truncated" -> Files.write(f, java.util.Arrays.copyOf(bytes, bytes.length / 2));
+                    case "foreign" -> Files.write(f, "not a deviation file".getBytes());
+                    case "one bit of a value" -> {
+                        // The last stored value (the file's last 4 bytes are its checksum): still well formed, and the
+                        // heights' hashes still match, so only the checksum tells.
+                        bytes[bytes.length - 5] ^= 0x40;
+                        Files.write(f, bytes);
+                    }
+                    default -> {
+                        bytes[7] ^= 1; // another format number
+                        Files.write(f, bytes);
+                    }
                 }
             }
-        }
-        DeviationStore second = DeviationStore.in(dir);
-        assertSameTerrain(without, build(plain, second));
-        assertEquals(0, second.hits());
-        DeviationStore third = DeviationStore.in(dir);
-        assertSameTerrain(without, build(plain, third));
-        assertEquals(second.misses(), third.hits(), "rewritten whole");
-        try (Stream<Path> s = Files.walk(dir)) {
-            assertTrue(s.noneMatch(p -> p.toString().endsWith(".part")), "no file left aside");
+            DeviationStore second = DeviationStore.in(dir);
+            assertSameTerrain(without, build(plain, second));
+            assertEquals(0, second.hits(), damage + ": nothing served");
+            DeviationStore third = DeviationStore.in(dir);
+            assertSameTerrain(without, build(plain, third));
+            assertEquals(second.misses(), third.hits(), damage + ": rewritten whole");
+            try (Stream<Path> s = Files.walk(dir)) {
+                assertTrue(s.noneMatch(p -> p.toString().endsWith(".part")), "no file left aside");
+            }
         }
     }
 
