@@ -103,10 +103,21 @@ public final class CameraImage {
         return distanceMetres != null;
     }
 
-    /** Distance at a pixel, metres (+∞ sky). */
+    /**
+     * Distance at a pixel, metres (+∞ sky).
+     *
+     * @throws IndexOutOfBoundsException when the column or row lies outside the image
+     * @throws IllegalStateException     when the image was rendered without distances
+     */
     public float distanceMetres(int column, int row) {
         if (distanceMetres == null) {
             throw new IllegalStateException("rendered without distances");
+        }
+        if (column < 0 || column >= widthPx()) {
+            throw new IndexOutOfBoundsException("column " + column + " outside the image's columns 0…" + (widthPx() - 1));
+        }
+        if (row < 0 || row >= heightPx()) {
+            throw new IndexOutOfBoundsException("row " + row + " outside the image's rows 0…" + (heightPx() - 1));
         }
         return distanceMetres[row * widthPx() + column];
     }
@@ -129,6 +140,9 @@ public final class CameraImage {
 
     /** The distance map as a read-only buffer (for writers), no copy. */
     public java.nio.FloatBuffer distanceBuffer() {
+        if (distanceMetres == null) {
+            throw new IllegalStateException("rendered without distances");
+        }
         return java.nio.FloatBuffer.wrap(distanceMetres).asReadOnlyBuffer();
     }
 

@@ -55,6 +55,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     /** Fine patches' geometries with their GL buffers, kept across renders; one render uses it at a time. */
     private final MeshCache meshes = new MeshCache();
     private final java.util.concurrent.locks.ReentrantLock meshLock = new java.util.concurrent.locks.ReentrantLock();
+    /** Set by the first {@link #close}: later renders are refused at once, later closes do nothing. */
+    private final java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
     /** False after {@link #withoutMeshCache}. */
     private volatile boolean keepMeshes = true;
 
@@ -187,8 +189,10 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws IllegalArgumentException      for a viewpoint without DEM data
      * @throws InsufficientMemoryException   before rendering, when the request needs more heap than the JVM may use
      * @throws dempano.render.RenderFailedException when the GL thread fails (the renderer is then closed)
+     * @throws IllegalStateException         when this renderer was closed
      */
     public Panorama render(PanoramaRequest req, Consumer<String> progress) {
+        checkOpen();
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
         Mosaic mosaic = tiles(req, clock);
@@ -231,6 +235,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      *                                  perspective views
      */
     public CameraImage render(CameraRequest request, Consumer<String> progress) {
+        checkOpen();
         PanoramaRequest req = request.settings();
         CameraView view = request.view();
         ViewLayout layout = reference() ? null : ViewLayout.forTarget(view, req.supersampling());
@@ -741,8 +746,16 @@ public final class PanoramaRenderer implements AutoCloseable {
         return Math.max(0.01, Math.min(requested, bound));
     }
 
+    /**
+     * Ends the GL context's use by this renderer and frees its meshes. A second call does nothing; a render started
+     * afterwards is refused ({@link IllegalStateException}), and one still running on another thread fails when it
+     * next needs the context: close after the renders end.
+     */
     @Override
     public void close() {
+        if (closed.getAndSet(true)) {
+            return; // closed already (AutoCloseable's advice: a second close does nothing)
+        }
         if (handle != null) {
             OffscreenRenderer.Handle h;
             try {
@@ -757,6 +770,13 @@ public final class PanoramaRenderer implements AutoCloseable {
                 meshLock.unlock();
                 h.close();
             }
+        }
+    }
+
+    /** Refuses a render on a closed renderer before any tile is read or mesh built. */
+    private void checkOpen() {
+        if (closed.get()) {
+            throw new IllegalStateException("this renderer is closed: open another");
         }
     }
 

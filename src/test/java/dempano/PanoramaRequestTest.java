@@ -114,6 +114,15 @@ class PanoramaRequestTest {
         assertEquals(r.products(), fresh.products());
     }
 
+    @Test
+    void theTallestViewsAGlRenderbufferHoldsAreAccepted() {
+        // ±80° at 20 px/°: views of 950 × 14 081 pixels, under the 16 384 limit.
+        PanoramaRequest r = PanoramaRequest.at(46.43, 8.09).withElevationRange(new ElevationRange(-80, 80, false));
+        dempano.panorama.ViewLayout l = dempano.panorama.ViewLayout.forPanorama(dempano.panorama.PanoramaGeometry.of(
+                r.pixelsPerDegree(), -80, 80), r.views(), r.supersampling());
+        assertTrue(l.heightPx() > 14_000 && l.heightPx() <= dempano.panorama.ViewLayout.MAX_VIEW_PX, l.toString());
+    }
+
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
             "latitude 91 | latitude",
@@ -127,6 +136,10 @@ class PanoramaRequestTest {
             "snap radius 0 | snap-to-summit radius must be in (0,",
             "nothing to render | nothing to render: both colour and distance are switched off",
             "layers without distance | are computed from distances: they need the distance map",
+            // Views taller than a GL renderbuffer may be (jME failed on the GL thread at render time).
+            "views too tall | pixels would be needed (at most 16384): a view's height grows as the tangent",
+            // 178° at 0.1 px/° is 17.8 rows: 18 whole rows from the top reach -91° (the message said 'must lie within').
+            "rows past -90 | at 0.1 pixels per degree takes 18 whole rows from the top, which reach down to -91.0000°",
     })
     void badValuesAreRefusedWithTheirMessage(String what, String message) {
         PanoramaRequest r = PanoramaRequest.at(46.43, 8.09);
@@ -143,6 +156,8 @@ class PanoramaRequestTest {
                 case "snap radius" -> r.withSnapToSummitMetres(0);
                 case "nothing to" -> r.withColour(false).withDistance(false);
                 case "layers without" -> r.withDistance(false).withLayers(Set.of(Layer.values()[0]));
+                case "views too" -> r.withPixelsPerDegree(5).withElevationRange(new ElevationRange(-89, 89, false));
+                case "rows past" -> r.withPixelsPerDegree(0.1).withElevationRange(new ElevationRange(-89, 89, false));
                 default -> throw new AssertionError(what);
             }
         });

@@ -52,7 +52,18 @@ public record PanoramaGeometry(double pixelsPerDegree, double topElevationDeg, i
         if (!(topDeg > bottomDeg)) {
             throw new IllegalArgumentException("elevation range needs top > bottom, got " + bottomDeg + ":" + topDeg);
         }
+        if (!(topDeg <= 90 && bottomDeg >= -90)) {
+            throw new IllegalArgumentException("elevation range must lie within [-90°, 90°], got " + bottomDeg + ":" + topDeg);
+        }
         int rows = (int) Math.ceil((topDeg - bottomDeg) * pixelsPerDegree - 1e-9);
+        double reached = topDeg - rows / pixelsPerDegree;
+        if (reached < -90) {
+            // Whole rows of 1/ppd degree from the top: the last one may reach further down than the range asked.
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "elevation range %s:%s at %s pixels"
+                    + " per degree takes %d whole rows from the top, which reach down to %.4f°, below -90°: raise the"
+                    + " bottom or choose pixels per degree that fit the range in whole rows", bottomDeg, topDeg,
+                    pixelsPerDegree, rows, reached));
+        }
         return new PanoramaGeometry(pixelsPerDegree, topDeg, rows);
     }
 

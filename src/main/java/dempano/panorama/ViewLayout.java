@@ -212,8 +212,8 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
         perPixel = 2 * half / vw;
         double top = yMax + CAMERA_MARGIN_PX * perPixel;
         int vh = (int) Math.ceil((top - yMin + CAMERA_MARGIN_PX * perPixel) / perPixel);
-        if (vw > 16384 || vh > 16384) {
-            throw new IllegalArgumentException("views of " + vw + "×" + vh + " pixels would be needed (at most 16384):"
+        if (vw > MAX_VIEW_PX || vh > MAX_VIEW_PX) {
+            throw new IllegalArgumentException("views of " + vw + "×" + vh + " pixels would be needed (at most " + MAX_VIEW_PX + "):"
                     + " lower the supersampling or the image size");
         }
         return new ViewLayout(views, vw, vh, top, top - vh * perPixel, half, axes);
@@ -307,6 +307,9 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
         v[2] /= l;
     }
 
+    /** The largest view side, pixels: an OpenGL renderbuffer's limit on llvmpipe and most GPUs. */
+    public static final int MAX_VIEW_PX = 16384;
+
     /** Views rendered by default, as in the thesis. */
     public static final int DEFAULT_VIEWS = 8;
 
@@ -335,6 +338,14 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
         top += perPixel;
         bottom -= perPixel;
         int h = (int) Math.ceil((top - bottom) / perPixel);
+        if (w > MAX_VIEW_PX || h > MAX_VIEW_PX) {
+            // An OpenGL renderbuffer's limit (llvmpipe's and most GPUs'): jME would fail on the GL thread instead.
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "views of %d×%d pixels would be"
+                    + " needed (at most %d): a view's height grows as the tangent of the elevation range's ends"
+                    + " (%.1f°…%.1f° here); narrow the elevation range or lower the pixels per degree (%s) or the"
+                    + " supersampling (%s)", w, h, MAX_VIEW_PX, g.bottomElevationDeg(), g.topElevationDeg(),
+                    g.pixelsPerDegree(), supersampling));
+        }
         return new ViewLayout(views, w, h, top, top - h * perPixel);
     }
 
