@@ -243,6 +243,8 @@ public final class BatchRun {
     private static ResultsCsv create(Path file) throws IOException {
         try {
             return ResultsCsv.create(file);
+        } catch (BatchFolderInUseException e) {
+            throw e;
         } catch (IOException e) {
             throw new IOException("cannot write " + file + ": " + IoMessages.reason(e), e);
         }

@@ -16,6 +16,10 @@ import org.apache.commons.csv.CSVPrinter;
  * lines of the rows that finished. {@code files} is the row's file names (relative to the output
  * folder) separated by spaces, {@code seconds} has millisecond resolution, {@code error} is one line
  * (empty when OK). UTF-8, CRLF line ends (RFC 4180), fields quoted where needed.
+ *
+ * <p>The file is locked while a run writes it (an advisory lock, which every batch takes): a second batch into the
+ * same folder, in this process or another, is refused ({@link BatchFolderInUseException}) instead of truncating the
+ * file under the first and interleaving lines with it, which lost one run's lines.
  */
 final class ResultsCsv implements AutoCloseable {
     static final String[] HEADER = {"id", "status", "files", "seconds", "error"};
@@ -27,9 +31,29 @@ final class ResultsCsv implements AutoCloseable {
         this.directory = directory;
     }
 
-    /** Creates (or replaces) the file and writes the header. */
+    /**
+     * Creates (or replaces) the file, locked for this run, and writes the header.
+     *
+     * @throws BatchFolderInUseException when another batch holds the file
+     */
     static ResultsCsv create(Path file) throws IOException {
-        BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
+        java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(file,
+                java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.WRITE);
+        java.nio.channels.FileLock lock;
+        try {
+            lock = channel.tryLock();
+        } catch (java.nio.channels.OverlappingFileLockException e) {
+            lock = null; // held by a run of this process
+        } catch (IOException | RuntimeException e) {
+            channel.close();
+            throw e;
+        }
+        if (lock == null) {
+            channel.close();
+            throw new BatchFolderInUseException(file);
+        }
+        channel.truncate(0); // only now: the other run's lines are not touched
+        BufferedWriter w = new BufferedWriter(java.nio.channels.Channels.newWriter(channel, StandardCharsets.UTF_8));
         CSVPrinter p = new CSVPrinter(w, CSVFormat.DEFAULT.builder().setHeader(HEADER).get());
         p.flush();
         Path dir = file.toAbsolutePath().getParent();

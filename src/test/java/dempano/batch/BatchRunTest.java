@@ -192,6 +192,34 @@ class BatchRunTest {
     }
 
     @Test
+    void aSecondBatchIntoTheSameFolderIsRefusedWhileTheFirstRuns(@TempDir Path out) throws Exception {
+        // Both ran, both said "6 ok", and results.csv listed only one run's rows (a hostile test of the API).
+        double[] vp = DemoTerrain.viewpoint();
+        List<BatchRow> first = List.of(BatchRow.of("a0", at(vp[0], vp[1])), BatchRow.of("a1", at(vp[0] + 0.01, vp[1])));
+        List<BatchRow> second = List.of(BatchRow.of("b0", at(vp[0], vp[1])));
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            BatchRenderer batch = new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT);
+            Exception[] refused = new Exception[1];
+            BatchSummary s = batch.newRun(first, new BatchListener() {
+                @Override
+                public void rowStarted(BatchRow row, int index) {
+                    if (index == 1) { // the first run holds results.csv with one line written
+                        refused[0] = org.junit.jupiter.api.Assertions.assertThrows(BatchFolderInUseException.class,
+                                () -> batch.newRun(second, null).run());
+                    }
+                }
+            }).run();
+            assertTrue(refused[0].getMessage().contains("another batch is writing into " + out.toAbsolutePath()),
+                    refused[0].getMessage());
+            assertEquals(2, s.okCount());
+            assertEquals(List.of("a0", "a1"), results(out).stream().map(c -> c.get("id")).toList());
+            // Once it has ended, the folder is free again.
+            assertEquals(1, batch.newRun(second, null).run().okCount());
+            assertEquals(List.of("b0"), results(out).stream().map(c -> c.get("id")).toList());
+        }
+    }
+
+    @Test
     void aRowWhoseFileIsBlockedFailsAloneAndLeavesNoPartOfItsSet(@TempDir Path out) throws IOException {
         double[] vp = DemoTerrain.viewpoint();
         Files.createDirectory(out.resolve("blocked-distance.png")); // a folder in the way of one of its files
