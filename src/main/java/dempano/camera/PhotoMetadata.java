@@ -44,42 +44,120 @@ import java.util.Locale;
  *
  * <p><b>GPS position 0°, 0°</b>, which cameras without a fix write, counts as absent.
  *
- * @param source              the file, for messages
- * @param widthPx             displayed width, pixels; 0 = unknown
- * @param heightPx            displayed height, pixels; 0 = unknown
- * @param orientation         EXIF Orientation 1–8 as written; 0 = no tag (displayed as stored)
- * @param latDeg              GPS latitude, degrees, north positive
- * @param lonDeg              GPS longitude, degrees, east positive
- * @param gpsAltitudeMetres   GPS altitude, metres above sea level (negative below)
- * @param imageDirectionDeg   GPSImgDirection: the direction the camera pointed, degrees clockwise from
- *                            {@code imageDirectionReference}'s north
- * @param imageDirectionReference north of {@code imageDirectionDeg}
- * @param focalLengthMm       the lens's focal length, mm
- * @param focal35mmMm         35 mm-equivalent focal length, mm (whole millimetres in EXIF)
- * @param sensorWidthMm       the sensor's long side, mm, from the focal-plane resolution (pixels per unit of the
- *                            sensor at the EXIF pixel size)
- * @param xmpYawDeg           XMP yaw (heading), degrees clockwise from true north
- * @param xmpPitchDeg         XMP pitch, degrees, positive up
- * @param xmpRollDeg          XMP roll, degrees, positive clockwise as the photographer sees it
- * @param xmpAttitudeSource   which XMP properties gave the attitude ("drone-dji:Gimbal…Degree" or
- *                            "GPano:Pose…Degrees"); null = none
- * @param problems            what the reader could not make sense of (corrupt directories, unknown units), for
- *                            messages; empty when all went well
+ * @param source      the file, for messages
+ * @param widthPx     displayed width, pixels; 0 = unknown
+ * @param heightPx    displayed height, pixels; 0 = unknown
+ * @param orientation EXIF Orientation 1–8 as written; 0 = no tag (displayed as stored)
+ * @param gps         the EXIF GPS tags: position, altitude, image direction ({@link Gps#NONE} when there are none)
+ * @param lens        the EXIF lens tags ({@link Lens#NONE} when there are none)
+ * @param xmp         the XMP attitude ({@link XmpAttitude#NONE} when there is none)
+ * @param problems    what the reader could not make sense of (corrupt directories, unknown units), for messages;
+ *                    empty when all went well
  */
-public record PhotoMetadata(String source, int widthPx, int heightPx, int orientation, double latDeg,
-                            double lonDeg, double gpsAltitudeMetres, double imageDirectionDeg,
-                            DirectionReference imageDirectionReference, double focalLengthMm, double focal35mmMm,
-                            double sensorWidthMm, double xmpYawDeg, double xmpPitchDeg, double xmpRollDeg,
-                            String xmpAttitudeSource, List<String> problems) {
+public record PhotoMetadata(String source, int widthPx, int heightPx, int orientation, Gps gps, Lens lens,
+                            XmpAttitude xmp, List<String> problems) {
+    /**
+     * The EXIF GPS tags.
+     *
+     * @param latDeg                  GPS latitude, degrees, north positive
+     * @param lonDeg                  GPS longitude, degrees, east positive
+     * @param altitudeMetres          GPS altitude, metres above sea level (negative below)
+     * @param imageDirectionDeg       GPSImgDirection: the direction the camera pointed, degrees clockwise from
+     *                                {@code imageDirectionReference}'s north
+     * @param imageDirectionReference north of {@code imageDirectionDeg}
+     */
+    public record Gps(double latDeg, double lonDeg, double altitudeMetres, double imageDirectionDeg,
+                      DirectionReference imageDirectionReference) {
+        public Gps {
+            if (imageDirectionReference == null) {
+                imageDirectionReference = DirectionReference.NOT_GIVEN;
+            }
+        }
+
+        public static final Gps NONE = new Gps(Double.NaN, Double.NaN, Double.NaN, Double.NaN, DirectionReference.NOT_GIVEN);
+    }
+
+    /**
+     * The EXIF lens tags.
+     *
+     * @param focalLengthMm the lens's focal length, mm
+     * @param focal35mmMm   35 mm-equivalent focal length, mm (whole millimetres in EXIF)
+     * @param sensorWidthMm the sensor's long side, mm, from the focal-plane resolution (pixels per unit of the sensor
+     *                      at the EXIF pixel size)
+     */
+    public record Lens(double focalLengthMm, double focal35mmMm, double sensorWidthMm) {
+        public static final Lens NONE = new Lens(Double.NaN, Double.NaN, Double.NaN);
+    }
+
+    /**
+     * The camera's attitude from XMP.
+     *
+     * @param yawDeg   yaw (heading), degrees clockwise from true north
+     * @param pitchDeg pitch, degrees, positive up
+     * @param rollDeg  roll, degrees, positive clockwise as the photographer sees it
+     * @param source   which XMP properties gave it ("drone-dji:Gimbal…Degree" or "GPano:Pose…Degrees"); null = none
+     */
+    public record XmpAttitude(double yawDeg, double pitchDeg, double rollDeg, String source) {
+        public static final XmpAttitude NONE = new XmpAttitude(Double.NaN, Double.NaN, Double.NaN, null);
+    }
+
+    public double latDeg() {
+        return gps.latDeg();
+    }
+
+    public double lonDeg() {
+        return gps.lonDeg();
+    }
+
+    public double gpsAltitudeMetres() {
+        return gps.altitudeMetres();
+    }
+
+    public double imageDirectionDeg() {
+        return gps.imageDirectionDeg();
+    }
+
+    public DirectionReference imageDirectionReference() {
+        return gps.imageDirectionReference();
+    }
+
+    public double focalLengthMm() {
+        return lens.focalLengthMm();
+    }
+
+    public double focal35mmMm() {
+        return lens.focal35mmMm();
+    }
+
+    public double sensorWidthMm() {
+        return lens.sensorWidthMm();
+    }
+
+    public double xmpYawDeg() {
+        return xmp.yawDeg();
+    }
+
+    public double xmpPitchDeg() {
+        return xmp.pitchDeg();
+    }
+
+    public double xmpRollDeg() {
+        return xmp.rollDeg();
+    }
+
+    public String xmpAttitudeSource() {
+        return xmp.source();
+    }
+
     /** XMP namespace of DJI drones' {@code drone-dji:} properties. */
     public static final String DJI_NAMESPACE = "http://www.dji.com/drone-dji/1.0/";
     /** XMP namespace of Google's photo-sphere {@code GPano:} properties. */
     public static final String GPANO_NAMESPACE = "http://ns.google.com/photos/1.0/panorama/";
 
     public PhotoMetadata {
-        if (imageDirectionReference == null) {
-            imageDirectionReference = DirectionReference.NOT_GIVEN;
-        }
+        gps = gps == null ? Gps.NONE : gps;
+        lens = lens == null ? Lens.NONE : lens;
+        xmp = xmp == null ? XmpAttitude.NONE : xmp;
         problems = problems == null ? List.of() : List.copyOf(problems);
     }
 
@@ -252,8 +330,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 attitudeSource = src;
             }
         }
-        return new PhotoMetadata(source, width, height, orientation, lat, lon, alt, dir, dirRef, focal, focal35,
-                sensorWidth, yaw, pitch, roll, attitudeSource, problems);
+        return new PhotoMetadata(source, width, height, orientation, new Gps(lat, lon, alt, dir, dirRef),
+                new Lens(focal, focal35, sensorWidth), new XmpAttitude(yaw, pitch, roll, attitudeSource), problems);
     }
 
     /**
@@ -456,7 +534,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
 
     /** How far the camera at the GPS altitude (its own: height 0 unless a flag gives one) is below the ground; NaN: unknown. */
     private double gpsEyeBelowMetres(PhotoOverrides o, double demGroundMetres) {
-        return demGroundMetres - gpsAltitudeMetres - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0);
+        return demGroundMetres - gpsAltitudeMetres() - (given(o.cameraHeightMetres()) ? o.cameraHeightMetres() : 0);
     }
 
     /** Where a value given in the overrides came from: "from FLAG", or {@link #ESTIMATED}. */
@@ -470,8 +548,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             provenance.add("metadata problem: " + p);
         }
         // Position.
-        double lat = given(o.latDeg()) ? o.latDeg() : latDeg;
-        double lon = given(o.lonDeg()) ? o.lonDeg() : lonDeg;
+        double lat = given(o.latDeg()) ? o.latDeg() : latDeg();
+        double lon = given(o.lonDeg()) ? o.lonDeg() : lonDeg();
         if (!given(lat) || !given(lon)) {
             String gpsProblem = problems.stream().filter(p -> p.startsWith("GPSLatitude") || p.startsWith("GPSLongitude"))
                     .findFirst().orElse(null);
@@ -494,13 +572,13 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             offset = o.offsetMetres();
             provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
                     + " (" + (estimated.contains(PhotoOverrides.OFFSET) ? ESTIMATED : PhotoOverrides.OFFSET) + ")");
-        } else if (given(gpsAltitudeMetres) && gpsEyeBelowMetres(o, demGroundMetres) > Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
+        } else if (given(gpsAltitudeMetres()) && gpsEyeBelowMetres(o, demGroundMetres) > Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
             provenance.add(String.format(Locale.ROOT, "camera altitude %s m from EXIF GPSAltitude not used: %.1f m below"
                     + " the DEM surface (%.1f m); standing on the DEM instead (%s 0; %s gives an altitude)",
-                    num(gpsAltitudeMetres), gpsEyeBelowMetres(o, demGroundMetres), demGroundMetres, PhotoOverrides.OFFSET,
+                    num(gpsAltitudeMetres()), gpsEyeBelowMetres(o, demGroundMetres), demGroundMetres, PhotoOverrides.OFFSET,
                     PhotoOverrides.ALTITUDE));
-        } else if (given(gpsAltitudeMetres)) {
-            altitude = gpsAltitudeMetres;
+        } else if (given(gpsAltitudeMetres())) {
+            altitude = gpsAltitudeMetres();
             defaultHeight = 0;
             provenance.add("camera altitude " + num(altitude) + " m from EXIF GPSAltitude (GPS altitudes are often"
                     + " tens of metres off: " + PhotoOverrides.OFFSET + " 0 stands on the DEM instead)");
@@ -516,18 +594,18 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         if (given(o.headingDeg())) {
             heading = o.headingDeg();
             provenance.add("heading " + num(heading) + "° " + from(PhotoOverrides.HEADING, estimated));
-        } else if (given(imageDirectionDeg)) {
-            String what = "the EXIF direction (GPSImgDirection " + num(imageDirectionDeg) + "°)";
-            switch (imageDirectionReference) {
+        } else if (given(imageDirectionDeg())) {
+            String what = "the EXIF direction (GPSImgDirection " + num(imageDirectionDeg()) + "°)";
+            switch (imageDirectionReference()) {
                 case TRUE -> {
-                    heading = imageDirectionDeg;
+                    heading = imageDirectionDeg();
                     provenance.add("heading " + num(heading) + "° from EXIF GPSImgDirection (true north)"
                             + (given(o.declinationDeg()) ? "; " + PhotoOverrides.DECLINATION + " not used: the direction is true" : ""));
                 }
                 case MAGNETIC -> {
                     if (given(o.declinationDeg())) {
-                        heading = imageDirectionDeg + o.declinationDeg();
-                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg)
+                        heading = imageDirectionDeg() + o.declinationDeg();
+                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg())
                                 + "° magnetic + declination " + num(o.declinationDeg()) + "° (" + PhotoOverrides.DECLINATION + ")");
                     } else {
                         missing.add(what + " is magnetic (GPSImgDirectionRef M) and the declination is unknown: give "
@@ -537,8 +615,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 }
                 case NOT_GIVEN -> {
                     if (given(o.declinationDeg())) {
-                        heading = imageDirectionDeg + o.declinationDeg();
-                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg)
+                        heading = imageDirectionDeg() + o.declinationDeg();
+                        provenance.add("heading " + num(heading) + "° = EXIF GPSImgDirection " + num(imageDirectionDeg())
                                 + "° (no reference: read as magnetic) + declination " + num(o.declinationDeg()) + "°");
                     } else {
                         missing.add(what + " has no reference (GPSImgDirectionRef): give " + PhotoOverrides.DECLINATION
@@ -547,17 +625,17 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 }
                 default -> throw new IllegalStateException();
             }
-        } else if (given(xmpYawDeg)) {
-            heading = xmpYawDeg;
-            provenance.add("heading " + num(heading) + "° from XMP " + xmpAttitudeSource + " (true north)");
+        } else if (given(xmpYawDeg())) {
+            heading = xmpYawDeg();
+            provenance.add("heading " + num(heading) + "° from XMP " + xmpAttitudeSource() + " (true north)");
         } else {
             missing.add("no camera heading in the EXIF (GPSImgDirection) or XMP: give " + PhotoOverrides.HEADING
                     + " (degrees clockwise from true north)");
         }
         // Pitch and roll.
-        double pitch = pick(o.pitchDeg(), xmpPitchDeg, "pitch", PhotoOverrides.PITCH, "0 = level, positive up",
+        double pitch = pick(o.pitchDeg(), xmpPitchDeg(), "pitch", PhotoOverrides.PITCH, "0 = level, positive up",
                 estimated, missing, provenance);
-        double roll = pick(o.rollDeg(), xmpRollDeg, "roll", PhotoOverrides.ROLL,
+        double roll = pick(o.rollDeg(), xmpRollDeg(), "roll", PhotoOverrides.ROLL,
                 "0 = level horizon, positive = camera turned clockwise", estimated, missing, provenance);
         // Intrinsics.
         CameraIntrinsics intrinsics = intrinsics(o, estimated, missing, provenance);
@@ -581,7 +659,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             return flag;
         }
         if (given(xmp)) {
-            provenance.add(what + " " + num(xmp) + "° from XMP " + xmpAttitudeSource);
+            provenance.add(what + " " + num(xmp) + "° from XMP " + xmpAttitudeSource());
             return xmp;
         }
         missing.add("no camera " + what + " in the metadata: give " + flagName + " (" + hint + ")");
@@ -610,8 +688,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             return null;
         }
         CameraIntrinsics c = null;
-        double focal = given(o.focalLengthMm()) ? o.focalLengthMm() : focalLengthMm;
-        double sensor = given(o.sensorWidthMm()) ? o.sensorWidthMm() : sensorWidthMm;
+        double focal = given(o.focalLengthMm()) ? o.focalLengthMm() : focalLengthMm();
+        double sensor = given(o.sensorWidthMm()) ? o.sensorWidthMm() : sensorWidthMm();
         boolean focalFlags = given(o.focalLengthMm()) || given(o.sensorWidthMm());
         try {
             if (given(o.horizontalFovDeg())) {
@@ -636,17 +714,17 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             } else if (focalFlags) {
                 missing.add(PhotoOverrides.SENSOR_WIDTH + " needs a focal length and the EXIF has none: give "
                         + PhotoOverrides.FOCAL);
-            } else if (given(focal35mmMm)) {
-                c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35mmMm);
-                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLengthIn35mmFilm " + num(focal35mmMm)
+            } else if (given(focal35mmMm())) {
+                c = CameraIntrinsics.fromFocal35mm(widthPx, heightPx, focal35mmMm());
+                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLengthIn35mmFilm " + num(focal35mmMm())
                         + " mm (diagonal definition; whole millimetres, so uncertain by ±"
-                        + String.format(Locale.ROOT, "%.1f", 50 / focal35mmMm) + " %: " + PhotoOverrides.HFOV + " or a calibration is better)");
-            } else if (given(focalLengthMm) && given(sensorWidthMm)) {
-                c = CameraIntrinsics.fromFocalLength(widthPx, heightPx, focalLengthMm, sensorWidthMm);
-                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLength " + num(focalLengthMm)
-                        + " mm on a " + num(sensorWidthMm) + " mm sensor (EXIF FocalPlaneX/YResolution)");
-            } else if (given(focalLengthMm)) {
-                missing.add("the EXIF gives the focal length (" + num(focalLengthMm) + " mm) but neither a 35 mm"
+                        + String.format(Locale.ROOT, "%.1f", 50 / focal35mmMm()) + " %: " + PhotoOverrides.HFOV + " or a calibration is better)");
+            } else if (given(focalLengthMm()) && given(sensorWidthMm())) {
+                c = CameraIntrinsics.fromFocalLength(widthPx, heightPx, focalLengthMm(), sensorWidthMm());
+                provenance.add("focal length " + num(c.fxPx()) + " px from EXIF FocalLength " + num(focalLengthMm())
+                        + " mm on a " + num(sensorWidthMm()) + " mm sensor (EXIF FocalPlaneX/YResolution)");
+            } else if (given(focalLengthMm())) {
+                missing.add("the EXIF gives the focal length (" + num(focalLengthMm()) + " mm) but neither a 35 mm"
                         + " equivalent nor the sensor size: give " + PhotoOverrides.SENSOR_WIDTH
                         + " (the sensor's long side), " + PhotoOverrides.FOCAL35 + " or " + PhotoOverrides.HFOV);
             } else {

@@ -150,9 +150,8 @@ public final class PhotoJob {
                 throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
                         + " camera from flags alone");
             }
-            meta = new PhotoMetadata("camera from flags", in.widthPx(), in.heightPx(), 1, Double.NaN, Double.NaN,
-                    Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    null, List.of());
+            meta = new PhotoMetadata("camera from flags", in.widthPx(), in.heightPx(), 1, PhotoMetadata.Gps.NONE,
+                    PhotoMetadata.Lens.NONE, PhotoMetadata.XmpAttitude.NONE, List.of());
         }
         // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
         PhotoOrientation open;

@@ -21,9 +21,9 @@ class PhotoOrientationOverridesTest {
 
     /** A 480 × 320 photo with a GPS position, and optionally a true heading, a GPS altitude, a 35 mm focal length. */
     static PhotoMetadata meta(double headingDeg, double gpsAltitudeMetres, double focal35mm) {
-        return new PhotoMetadata("test.jpg", 480, 320, 1, 46.43, 8.09, gpsAltitudeMetres, headingDeg,
-                Double.isNaN(headingDeg) ? DirectionReference.NOT_GIVEN : DirectionReference.TRUE, N, focal35mm, N, N, N, N,
-                null, List.of());
+        return new PhotoMetadata("test.jpg", 480, 320, 1, new PhotoMetadata.Gps(46.43, 8.09, gpsAltitudeMetres, headingDeg,
+                Double.isNaN(headingDeg) ? DirectionReference.NOT_GIVEN : DirectionReference.TRUE),
+                new PhotoMetadata.Lens(N, focal35mm, N), PhotoMetadata.XmpAttitude.NONE, List.of());
     }
 
     static OrientationEstimate estimate(double heading, double pitch, double roll, double hfov, double offsetMetres) {
