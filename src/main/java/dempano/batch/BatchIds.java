@@ -87,7 +87,7 @@ public final class BatchIds {
     }
 
     /** The id with control characters shown as {@code ?}, for one-line messages. */
-    static String printable(String id) {
+    public static String printable(String id) {
         StringBuilder b = new StringBuilder(id.length());
         id.codePoints().forEach(c -> b.appendCodePoint(Character.isISOControl(c) ? '?' : c));
         return b.toString();

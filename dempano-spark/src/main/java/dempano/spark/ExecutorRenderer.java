@@ -101,31 +101,50 @@ final class ExecutorRenderer {
     }
 
     /**
-     * A DEM folder on this node: a local path as it is; a Hadoop URI (hdfs://, s3a://, …) copied
-     * once per node into {@code java.io.tmpdir/dempano-dem-<hash>} (all its files: meant for regional
-     * tile sets; for a continent, put the tiles on every node's disk or a shared mount instead).
+     * A DEM folder on this node: a local path as it is (any characters: it is not read as a URI); a {@code file:} URI
+     * as its path; another Hadoop URI (hdfs://, s3a://, …) copied into {@code java.io.tmpdir/dempano-dem-<hash>} (all
+     * its files: meant for regional tile sets; for a continent, put the tiles on every node's disk or a shared mount
+     * instead). The copy is keyed by the URI and the folder's listing (every file's name, length and modification
+     * time), so a tile changed at the source is copied afresh by the next renderer opened, never served from an old
+     * copy; a copy that fails leaves nothing behind.
      */
     static Path localDem(String dir, JobSettings s) {
-        URI uri = URI.create(dir.replace(" ", "%20"));
-        if (uri.getScheme() == null || uri.getScheme().equals("file")) {
-            return uri.getScheme() == null ? Path.of(dir) : Path.of(uri);
+        if (!dir.matches("[A-Za-z][A-Za-z0-9+.-]*:.*")) {
+            return Path.of(dir); // a plain path: '%' or '[' in it are characters, not URI syntax
         }
-        Path local = Path.of(System.getProperty("java.io.tmpdir"),
-                "dempano-dem-" + sha256(dir).substring(0, 16));
-        if (Files.isDirectory(local)) {
-            return local; // staged earlier (by this or another executor on the node)
+        if (dir.regionMatches(true, 0, "file:", 0, 5)) {
+            try {
+                return Path.of(URI.create(dir).getPath()); // %20 and the like decoded
+            } catch (IllegalArgumentException e) {
+                return Path.of(new org.apache.hadoop.fs.Path(dir).toUri().getPath()); // not a valid URI: as Hadoop reads it
+            }
         }
+        org.apache.hadoop.fs.Path src = new org.apache.hadoop.fs.Path(dir);
+        Path staging = null;
         try {
-            Path staging = Files.createTempDirectory(local.getParent(), local.getFileName() + ".part-");
-            org.apache.hadoop.fs.Path src = new org.apache.hadoop.fs.Path(dir);
             FileSystem fs = src.getFileSystem(Hadoop.configuration(s.hadoop));
-            for (FileStatus f : fs.listStatus(src)) {
+            List<FileStatus> files = new ArrayList<>();
+            StringBuilder listing = new StringBuilder(dir);
+            FileStatus[] statuses = fs.listStatus(src);
+            java.util.Arrays.sort(statuses, java.util.Comparator.comparing(f -> f.getPath().getName()));
+            for (FileStatus f : statuses) {
                 if (f.isFile()) {
-                    fs.copyToLocalFile(false, f.getPath(), new org.apache.hadoop.fs.Path(staging.resolve(f.getPath().getName()).toUri()), true);
+                    files.add(f);
+                    listing.append('\u0000').append(f.getPath().getName()).append('\u0000').append(f.getLen())
+                            .append('\u0000').append(f.getModificationTime());
                 }
+            }
+            Path local = Path.of(System.getProperty("java.io.tmpdir"), "dempano-dem-" + sha256(listing.toString()).substring(0, 16));
+            if (Files.isDirectory(local)) {
+                return local; // staged earlier from the same files (by this or another executor on the node)
+            }
+            staging = Files.createTempDirectory(local.getParent(), local.getFileName() + ".part-");
+            for (FileStatus f : files) {
+                fs.copyToLocalFile(false, f.getPath(), new org.apache.hadoop.fs.Path(staging.resolve(f.getPath().getName()).toUri()), true);
             }
             try {
                 Files.move(staging, local, StandardCopyOption.ATOMIC_MOVE);
+                staging = null;
             } catch (IOException e) {
                 if (!Files.isDirectory(local)) {
                     throw e;
@@ -133,7 +152,25 @@ final class ExecutorRenderer {
             }
             return local;
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot copy the DEM folder " + dir + " to " + local + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot copy the DEM folder " + dir + " to this node: " + e.getMessage(), e);
+        } finally {
+            if (staging != null) {
+                deleteQuietly(staging);
+            }
+        }
+    }
+
+    private static void deleteQuietly(Path dir) {
+        try (java.util.stream.Stream<Path> walk = Files.walk(dir)) {
+            walk.sorted(java.util.Comparator.reverseOrder()).forEach(p -> {
+                try {
+                    Files.deleteIfExists(p);
+                } catch (IOException e) {
+                    // left behind
+                }
+            });
+        } catch (IOException e) {
+            // left behind
         }
     }
 }

@@ -23,6 +23,11 @@ public final class JobSettings implements Serializable {
     public List<String> demDirs = new ArrayList<>();
     /** Output folder, any Hadoop-compatible URI or a local path. */
     public String outDir;
+    /**
+     * The folder relative image paths start from, as {@code dempano batch} takes them from the viewpoint file's folder:
+     * a local path, or a Hadoop URI (the image then copied to the node); null = the executor's working directory.
+     */
+    public String tableDir;
     /** Hadoop settings from the driver (spark.hadoop.*, core-site.xml), applied on the executors. */
     public Map<String, String> hadoop = new HashMap<>();
 

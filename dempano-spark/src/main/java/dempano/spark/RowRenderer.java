@@ -103,7 +103,8 @@ final class RowRenderer {
         StringWriter text = new StringWriter();
         try (CSVPrinter p = new CSVPrinter(text, CSVFormat.DEFAULT)) {
             p.printRecord(cells.keySet());
-            p.printRecord(cells.values().stream().map(v -> v == null ? "" : v).toList());
+            p.printRecord(cells.entrySet().stream().map(e -> e.getValue() == null ? ""
+                    : e.getKey().equals(ViewpointCsv.IMAGE) ? fromTableFolder(e.getValue()) : e.getValue()).toList());
         } catch (IOException e) {
             throw new IllegalStateException(e); // in memory
         }
@@ -117,6 +118,22 @@ final class RowRenderer {
         }
         String e = r.error();
         return BatchRow.invalid(0, id, where + (e.startsWith("line 2: ") ? e.substring("line 2: ".length()) : e));
+    }
+
+    /**
+     * An image cell as {@code dempano batch} reads it: a relative path is relative to the table's folder
+     * ({@link JobSettings#tableDir}; it was the executor's working directory, where another photo of that name was
+     * taken silently). Absolute paths and URIs as they are.
+     */
+    String fromTableFolder(String image) {
+        String cell = image.strip();
+        if (settings.tableDir == null || cell.isEmpty() || cell.matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")
+                || Path.of(cell).isAbsolute()) {
+            return image;
+        }
+        return settings.tableDir.matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")
+                ? new org.apache.hadoop.fs.Path(new org.apache.hadoop.fs.Path(settings.tableDir), cell).toString()
+                : Path.of(settings.tableDir).resolve(cell).toString();
     }
 
     /**
@@ -146,6 +163,19 @@ final class RowRenderer {
             if (fs instanceof org.apache.hadoop.fs.LocalFileSystem local) {
                 fs = local.getRaw(); // no .crc file beside each output on a local or mounted disk
             }
+        }
+        // A folder in the way of a file: copying would put the file inside it, and the row would say "ok".
+        for (Path f : files) {
+            org.apache.hadoop.fs.Path target = new org.apache.hadoop.fs.Path(out, f.getFileName().toString());
+            if (fs.exists(target) && fs.getFileStatus(target).isDirectory()) {
+                throw new IOException("cannot write " + target + ": a folder of that name is in the way");
+            }
+        }
+        // An earlier set's <id>.json goes first: until the new one is copied (last), the row's set is not claimed complete
+        // (a failed copy left new files beside the old json).
+        Path json = files.get(files.size() - 1);
+        if (json.getFileName().toString().endsWith(".json")) {
+            fs.delete(new org.apache.hadoop.fs.Path(out, json.getFileName().toString()), false);
         }
         for (Path f : files) {
             fs.copyFromLocalFile(false, true, new org.apache.hadoop.fs.Path(f.toUri()),

@@ -118,23 +118,46 @@ public final class SparkBatch {
             }
             CSVFormat csv = CSVFormat.DEFAULT.builder().setIgnoreEmptyLines(true).setIgnoreSurroundingSpaces(true)
                     .setTrim(true).get();
+            org.apache.hadoop.fs.Path headerFile = null;
             for (org.apache.hadoop.fs.Path f : files) {
                 boolean headerLine = true;
-                try (java.io.Reader r = new java.io.InputStreamReader(fs.open(f), java.nio.charset.StandardCharsets.UTF_8);
-                     CSVParser parser = CSVParser.parse(new java.io.BufferedReader(r), csv)) {
+                byte[] bytes;
+                try (java.io.InputStream stream = fs.open(f)) {
+                    bytes = stream.readAllBytes();
+                }
+                // As dempano batch reads its file: a byte-order mark skipped before parsing (a quoted first header cell
+                // after one was read as a literal '"id"'), bytes that are no UTF-8 spoil their rows, not the table.
+                boolean malformed = false;
+                try {
+                    java.nio.charset.StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes));
+                } catch (java.nio.charset.CharacterCodingException e) {
+                    malformed = true;
+                }
+                String text = new String(bytes, java.nio.charset.StandardCharsets.UTF_8);
+                if (text.startsWith("\uFEFF")) {
+                    text = text.substring(1);
+                }
+                try (CSVParser parser = CSVParser.parse(text, csv)) {
                     for (CSVRecord rec : parser) {
                         List<String> cells = rec.toList();
                         if (cells.stream().allMatch(String::isEmpty)) {
                             continue;
                         }
+                        boolean notUtf8 = malformed && cells.stream().anyMatch(v -> v.indexOf('\uFFFD') >= 0);
                         if (headerLine) {
                             headerLine = false;
-                            if (!cells.isEmpty() && cells.get(0).startsWith("\uFEFF")) {
-                                cells = new ArrayList<>(cells);
-                                cells.set(0, cells.get(0).substring(1));
+                            if (notUtf8) {
+                                throw new IllegalArgumentException(f + ": header line: not UTF-8 text (save the file as UTF-8)");
                             }
                             if (header == null) {
                                 header = cells;
+                                headerFile = f;
+                            } else if (!cells.equals(header)) {
+                                // The first file's header is every file's: one that orders or names its columns otherwise
+                                // would be read into the wrong columns.
+                                throw new IllegalArgumentException(f + ": its header line (" + String.join(",", cells)
+                                        + ") differs from " + headerFile.getName() + "'s (" + String.join(",", header)
+                                        + "): every file of a table folder must have the same columns in the same order");
                             }
                             continue;
                         }
@@ -142,7 +165,9 @@ public final class SparkBatch {
                         for (int i = 0; i < header.size(); i++) {
                             values[i] = i < cells.size() && !cells.get(i).isEmpty() ? cells.get(i) : null;
                         }
-                        if (cells.size() != header.size()) {
+                        if (notUtf8) {
+                            values[header.size()] = "not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)";
+                        } else if (cells.size() != header.size()) {
                             values[header.size()] = cells.size() + " fields, the header has " + header.size();
                         }
                         rows.add(RowFactory.create(values));
@@ -163,6 +188,24 @@ public final class SparkBatch {
         }
         schema = schema.add(FIELDS_ERROR, DataTypes.StringType);
         return spark.createDataFrame(rows, schema);
+    }
+
+    /**
+     * The folder a viewpoint table is in (for a table that is a folder, a Parquet table or a folder of CSV files, the
+     * folder that holds it), for relative image paths, as {@code dempano batch} takes them from its file's folder: a
+     * local path for a local table, else the Hadoop URI.
+     */
+    public static String tableFolder(SparkSession spark, String input) {
+        try {
+            org.apache.hadoop.fs.Path in = new org.apache.hadoop.fs.Path(input);
+            org.apache.hadoop.fs.FileSystem fs = in.getFileSystem(spark.sparkContext().hadoopConfiguration());
+            org.apache.hadoop.fs.Path q = fs.makeQualified(in);
+            fs.getFileStatus(q); // it exists
+            org.apache.hadoop.fs.Path dir = q.getParent();
+            return "file".equals(dir.toUri().getScheme()) ? java.nio.file.Path.of(dir.toUri()).toString() : dir.toString();
+        } catch (java.io.IOException e) {
+            throw new IllegalArgumentException("cannot read the viewpoint table " + input + ": " + e.getMessage(), e);
+        }
     }
 
     /** Renders every row of the table; see the class comment. */
@@ -186,7 +229,8 @@ public final class SparkBatch {
             }
         }
         List<Column> cells = new ArrayList<>();
-        known.forEach((n, c) -> cells.add(col("`" + c + "`").cast(DataTypes.StringType).as(n)));
+        // Trimmed as the CSV reader trims (a Parquet id ' a' was rendered as 'a', over the files of another row 'a').
+        known.forEach((n, c) -> cells.add(org.apache.spark.sql.functions.trim(col("`" + c + "`").cast(DataTypes.StringType)).as(n)));
         cells.add(java.util.Arrays.asList(table.columns()).contains(FIELDS_ERROR) ? col(FIELDS_ERROR)
                 : lit(null).cast(DataTypes.StringType).as(FIELDS_ERROR));
         Dataset<Row> rows = table.select(cells.toArray(new Column[0])).withColumn(SEQ, monotonically_increasing_id());
@@ -236,16 +280,81 @@ public final class SparkBatch {
                 .add("id", DataTypes.StringType).add("status", DataTypes.StringType).add("files", DataTypes.StringType)
                 .add("seconds", DataTypes.StringType).add("error", DataTypes.StringType);
         String resultsDir = resultsDir(settings.outDir);
-        spark.createDataFrame(out, schema).write().mode("overwrite").option("header", "true").option("escape", "\"")
-                .csv(resultsDir);
-
-        Dataset<Row> results = spark.read().option("header", "true").option("escape", "\"").csv(resultsDir);
-        long total = 0, ok = 0;
-        for (Row r : results.groupBy("status").count().collectAsList()) {
-            total += r.getLong(1);
-            ok += "ok".equals(r.getString(0)) ? r.getLong(1) : 0;
+        org.apache.hadoop.conf.Configuration conf = spark.sparkContext().hadoopConfiguration();
+        org.apache.hadoop.fs.Path lock = claim(settings.outDir, conf);
+        try {
+            spark.createDataFrame(out, schema).write().mode("overwrite").option("header", "true").option("escape", "\"")
+                    .csv(resultsDir);
+            Dataset<Row> results = spark.read().option("header", "true").option("escape", "\"").option("multiLine", "true")
+                    .csv(resultsDir);
+            long total = 0, ok = 0;
+            for (Row r : results.groupBy("status").count().collectAsList()) {
+                total += r.getLong(1);
+                ok += "ok".equals(r.getString(0)) ? r.getLong(1) : 0;
+            }
+            return new Summary(total, ok, total - ok, (System.nanoTime() - t0) / 1e9, resultsDir);
+        } finally {
+            release(lock, conf);
         }
-        return new Summary(total, ok, total - ok, (System.nanoTime() - t0) / 1e9, resultsDir);
+    }
+
+    /** The output folder cannot be used: it is a file, cannot be made, or another job is writing into it. */
+    public static final class OutputFolderException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        OutputFolderException(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
+    /** The marker a job holds in its output folder while it runs. */
+    public static final String LOCK_FILE = "_dempano_job_running";
+
+    /**
+     * Claims the output folder for this job: makes it, and creates {@link #LOCK_FILE} in it, failing where the file is
+     * there already (another job writes into the folder: two jobs lost and mixed each other's results lines). The file
+     * names the driver that holds it; a job killed before it could remove it leaves it behind, and the message says to
+     * delete it then.
+     */
+    static org.apache.hadoop.fs.Path claim(String outDir, org.apache.hadoop.conf.Configuration conf) {
+        org.apache.hadoop.fs.Path dir = new org.apache.hadoop.fs.Path(outDir);
+        org.apache.hadoop.fs.Path lock = new org.apache.hadoop.fs.Path(dir, LOCK_FILE);
+        org.apache.hadoop.fs.FileSystem fs;
+        try {
+            fs = dir.getFileSystem(conf);
+            if (fs.exists(dir) && !fs.getFileStatus(dir).isDirectory()) {
+                throw new OutputFolderException("the output folder " + outDir + " is a file: choose a folder", null);
+            }
+            fs.mkdirs(dir);
+        } catch (java.io.IOException e) {
+            throw new OutputFolderException("cannot make the output folder " + outDir + ": " + e.getMessage(), e);
+        }
+        String holder = java.lang.management.ManagementFactory.getRuntimeMXBean().getName() + " since "
+                + java.time.Instant.now();
+        try (org.apache.hadoop.fs.FSDataOutputStream o = fs.create(lock, false)) {
+            o.write((holder + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        } catch (org.apache.hadoop.fs.FileAlreadyExistsException e) {
+            String other;
+            try (java.io.InputStream in = fs.open(lock)) {
+                other = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).strip();
+            } catch (java.io.IOException e2) {
+                other = "?";
+            }
+            throw new OutputFolderException("another job is writing into " + outDir + " (" + other + "; " + LOCK_FILE
+                    + " there): wait for it to end or choose another output folder; if no job is running, delete "
+                    + new org.apache.hadoop.fs.Path(dir, LOCK_FILE), e);
+        } catch (java.io.IOException e) {
+            throw new OutputFolderException("cannot write into the output folder " + outDir + ": " + e.getMessage(), e);
+        }
+        return lock;
+    }
+
+    private static void release(org.apache.hadoop.fs.Path lock, org.apache.hadoop.conf.Configuration conf) {
+        try {
+            lock.getFileSystem(conf).delete(lock, false);
+        } catch (java.io.IOException e) {
+            System.err.println("dempano-spark: could not remove " + lock + ": " + e.getMessage() + " (delete it before the next job)");
+        }
     }
 
     /** Where the results table goes: {@code OUT/results}. */
@@ -298,8 +407,9 @@ public final class SparkBatch {
                     RowRenderer.Outcome o = fieldsError != null
                             ? RowRenderer.Outcome.error(id == null ? "" : id, "row '" + (id == null ? "" : id) + "': " + fieldsError, 0)
                             : renderer.render(id, cells, r.getString(names.size()));
-                    return RowFactory.create(o.id(), o.status(), o.files(), String.format(Locale.ROOT, "%.3f", o.seconds()),
-                            o.error());
+                    // Control characters (a line break in an id) as ?, as dempano batch writes results.csv.
+                    return RowFactory.create(dempano.batch.BatchIds.printable(o.id()), o.status(), o.files(),
+                            String.format(Locale.ROOT, "%.3f", o.seconds()), o.error());
                 }
             };
         }

@@ -21,7 +21,7 @@ import picocli.CommandLine.Parameters;
                 "Columns: id, lat, lon (required); altitude_m, offset_m, eye_height_m, range_km, ppd (optional), as for dempano batch."},
         footer = {"", "Writes D/<id>.png, D/<id>-distance.npy, D/<id>-distance.png, D/<id>.json per row (D: any Hadoop-compatible "
                 + "path) and the results table D/results/part-*.csv (id,status,files,seconds,error).",
-                "Exit codes: 0 every row done, 3 some rows failed (see the results), 1 unusable input, 2 bad arguments."})
+                "Exit codes: 0 every row done, 3 some rows failed (see the results), 1 unusable table or output folder, 2 bad arguments."})
 public final class SparkBatchMain implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "VIEWPOINTS", description = "Viewpoint table: CSV (header line) or Parquet (path ending in .parquet, or --format).")
     String viewpoints;
@@ -57,24 +57,40 @@ public final class SparkBatchMain implements Callable<Integer> {
         SparkBatch.Order o;
         try {
             s.check();
+            if (!List.of("tile", "random", "input").contains(order.toLowerCase(Locale.ROOT))) {
+                throw new IllegalArgumentException("--order must be tile, random or input, got '" + order + "'");
+            }
             o = SparkBatch.Order.valueOf(order.toUpperCase(Locale.ROOT));
+            if (format != null && !List.of("csv", "parquet").contains(format.toLowerCase(Locale.ROOT))) {
+                throw new IllegalArgumentException("--format must be csv or parquet, got '" + format + "'");
+            }
         } catch (IllegalArgumentException e) {
             System.err.println("dempano-spark: " + e.getMessage());
             return 2;
         }
         SparkSession spark = SparkSession.builder().appName("dempano-spark").getOrCreate();
         try {
-            var table = SparkBatch.read(spark, viewpoints, format);
-            int n = partitions;
-            if (n <= 0) {
-                long rows = table.count();
-                n = (int) Math.max(2L * spark.sparkContext().defaultParallelism(), (rows + 99) / 100);
-            }
+            // Every problem with the table or the output folder is one line and exit 1, never a stack trace: Spark's and
+            // Hadoop's exceptions (a missing or corrupt Parquet table, an output folder that is a file) included.
             SparkBatch.Summary sum;
+            int n = partitions;
             try {
+                var table = SparkBatch.read(spark, viewpoints, format);
+                s.tableDir = SparkBatch.tableFolder(spark, viewpoints);
+                if (n <= 0) {
+                    long rows = table.count();
+                    n = (int) Math.max(2L * spark.sparkContext().defaultParallelism(), (rows + 99) / 100);
+                }
                 sum = SparkBatch.run(spark, table, s, o, n, seed);
+            } catch (SparkBatch.OutputFolderException e) {
+                System.err.println("dempano-spark: " + e.getMessage());
+                return 1;
             } catch (IllegalArgumentException e) {
-                System.err.println("dempano-spark: " + viewpoints + ": " + e.getMessage());
+                System.err.println("dempano-spark: " + (e.getMessage().startsWith(viewpoints) ? "" : viewpoints + ": ")
+                        + e.getMessage());
+                return 1;
+            } catch (Exception e) {
+                System.err.println("dempano-spark: " + oneLine(e));
                 return 1;
             }
             System.err.printf(Locale.ROOT, "dempano-spark: %d ok, %d failed of %d rows in %.1f s (%d tasks, order %s); results in %s%n",
@@ -83,6 +99,16 @@ public final class SparkBatchMain implements Callable<Integer> {
         } finally {
             spark.stop();
         }
+    }
+
+    /** An exception's message on one line (Spark's carry a query plan after a line break), with its cause's. */
+    static String oneLine(Throwable e) {
+        String m = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().strip().split("\\R", 2)[0];
+        Throwable c = e.getCause();
+        if (c != null && c.getMessage() != null && !m.contains(c.getMessage().strip().split("\\R", 2)[0])) {
+            m += ": " + c.getMessage().strip().split("\\R", 2)[0];
+        }
+        return m;
     }
 
     public static void main(String[] args) {

@@ -158,7 +158,8 @@ class SparkBatchTest {
         List<String[]> good = List.of(
                 new String[] {"view", lat, lon, "", "", "", "", "", ""},
                 new String[] {"east", lat, lon, "", photo.toString(), "90", "-3", "0", "60"},
-                new String[] {"south", north, lon, "3000", photo.toString(), "180", "2", "5", "40"},
+                // A relative path: relative to the table's folder, as in batch mode (it was the working directory's).
+                new String[] {"south", north, lon, "3000", "photos/photo.png", "180", "2", "5", "40"},
                 new String[] {"gone", lat, lon, "", dir.resolve("gone.png").toString(), "90", "0", "0", "60"},
                 new String[] {"noimage", lat, lon, "", "", "45", "", "", ""});
         StringBuilder text = new StringBuilder(header + "\n");
@@ -178,7 +179,9 @@ class SparkBatchTest {
         List<String> sparkArgs = new ArrayList<>(List.of(csv.toString(), "--out-dir", sparkOut.toUri().toString(), "--dem-dir", dem.toString()));
         sparkArgs.addAll(List.of(OPTIONS));
         new CommandLine(main).parseArgs(sparkArgs.toArray(new String[0]));
-        SparkBatch.Summary s = SparkBatch.run(spark, SparkBatch.read(spark, csv.toString(), null), main.settings(),
+        JobSettings photoSettings = main.settings();
+        photoSettings.tableDir = SparkBatch.tableFolder(spark, csv.toString());
+        SparkBatch.Summary s = SparkBatch.run(spark, SparkBatch.read(spark, csv.toString(), null), photoSettings,
                 SparkBatch.Order.TILE, 2, 1);
         assertEquals(8, s.rows());
         assertEquals(3, s.ok());
@@ -224,7 +227,9 @@ class SparkBatchTest {
         List<String> parquetArgs = new ArrayList<>(List.of(parquet, "--out-dir", parquetOut.toUri().toString(), "--dem-dir", dem.toString()));
         parquetArgs.addAll(List.of(OPTIONS));
         new CommandLine(pm).parseArgs(parquetArgs.toArray(new String[0]));
-        SparkBatch.Summary ps = SparkBatch.run(spark, SparkBatch.read(spark, parquet, null), pm.settings(),
+        JobSettings parquetSettings = pm.settings();
+        parquetSettings.tableDir = SparkBatch.tableFolder(spark, parquet);
+        SparkBatch.Summary ps = SparkBatch.run(spark, SparkBatch.read(spark, parquet, null), parquetSettings,
                 SparkBatch.Order.TILE, 2, 1);
         assertEquals(5, ps.rows());
         assertEquals(3, ps.ok());
@@ -234,6 +239,93 @@ class SparkBatchTest {
             assertEquals(sparkResults.get(id).get("files"), fromParquet.get(id).get("files"), id);
         }
         assertSameFiles(sparkOut, parquetOut, 12);
+    }
+
+    /** A hostile test's table findings: read as dempano batch reads its file, or refused naming the file. */
+    @Test
+    void tablesAreReadAsBatchModeReadsThem() throws IOException {
+        // A byte-order mark before a quoted header (R's write.csv with UTF-8 BOM): the header's quotes were kept.
+        Path bom = tmp.resolve("bom.csv");
+        Files.write(bom, ("\uFEFF\"id\",\"lat\",\"lon\"\r\np1,0.1,0.2\r\n").getBytes(StandardCharsets.UTF_8));
+        var t = SparkBatch.read(spark, bom.toString(), null);
+        assertEquals(List.of("id", "lat", "lon", SparkBatch.FIELDS_ERROR), List.of(t.columns()));
+        assertEquals("p1", t.collectAsList().get(0).getString(0));
+
+        // Bytes that are no UTF-8 spoil their row, not the table (batch mode's rule).
+        Path latin1 = tmp.resolve("latin1.csv");
+        byte[] text = "id,lat,lon,note\nok,0.1,0.2,cafe\nbad,0.1,0.2,caf\u00e9\n".getBytes(StandardCharsets.ISO_8859_1);
+        Files.write(latin1, text);
+        List<Row> rows = SparkBatch.read(spark, latin1.toString(), null).collectAsList();
+        assertEquals(null, rows.get(0).getString(4));
+        assertTrue(rows.get(1).getString(4).startsWith("not UTF-8 text"), rows.get(1).getString(4));
+
+        // A folder of CSV files whose headers differ: refused (the second was read into the first's columns).
+        Path folder = Files.createDirectories(tmp.resolve("mixed-headers"));
+        Files.writeString(folder.resolve("a.csv"), "id,lat,lon\nf1,0.1,0.2\n");
+        Files.writeString(folder.resolve("b.csv"), "id,lon,lat\nf2,0.2,0.1\n");
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> SparkBatch.read(spark, folder.toString(), null));
+        assertTrue(e.getMessage().contains("b.csv: its header line (id,lon,lat) differs from a.csv's (id,lat,lon)"), e.getMessage());
+    }
+
+    /** The output folder: one job at a time, a file is no folder, a folder in the way of a row's file is that row's error. */
+    @Test
+    void theOutputFolderIsOneJobsAtATime() throws IOException {
+        Path dem = DemoTerrain.ensure(tmp.resolve("dem"));
+        double[] vp = DemoTerrain.viewpoint();
+        Path out = tmp.resolve("claimed");
+        org.apache.hadoop.conf.Configuration conf = spark.sparkContext().hadoopConfiguration();
+        org.apache.hadoop.fs.Path lock = SparkBatch.claim(out.toString(), conf);
+        SparkBatch.OutputFolderException twice = org.junit.jupiter.api.Assertions.assertThrows(
+                SparkBatch.OutputFolderException.class, () -> SparkBatch.claim(out.toString(), conf));
+        assertTrue(twice.getMessage().startsWith("another job is writing into " + out), twice.getMessage());
+
+        // A job into the claimed folder is refused and writes nothing (two jobs lost and mixed each other's lines).
+        String lat = String.format(Locale.ROOT, "%.4f", vp[0]), lon = String.format(Locale.ROOT, "%.4f", vp[1]);
+        Path csv = Files.writeString(tmp.resolve("claimed.csv"), "id,lat,lon\np,%s,%s\n".formatted(lat, lon));
+        SparkBatchMain main = new SparkBatchMain();
+        List<String> args = new ArrayList<>(List.of(csv.toString(), "--out-dir", out.toString(), "--dem-dir", dem.toString()));
+        args.addAll(List.of(OPTIONS));
+        new CommandLine(main).parseArgs(args.toArray(new String[0]));
+        org.junit.jupiter.api.Assertions.assertThrows(SparkBatch.OutputFolderException.class, () -> SparkBatch.run(spark,
+                SparkBatch.read(spark, csv.toString(), null), main.settings(), SparkBatch.Order.TILE, 1, 1));
+        assertEquals(List.of(SparkBatch.LOCK_FILE), names(out).stream().filter(n -> !n.endsWith(".crc")).toList());
+        lock.getFileSystem(conf).delete(lock, false);
+
+        // Ids trimmed as CSV cells are (a Parquet ' a' wrote over 'a''s files, both "ok"); an id with a line break is
+        // written with '?' and counted once; a folder in the way of a row's file is that row's error.
+        Files.createDirectories(out.resolve("q-distance.png"));
+        StructType schema = new StructType().add("id", DataTypes.StringType).add("lat", DataTypes.StringType)
+                .add("lon", DataTypes.StringType);
+        List<Row> table = List.of(RowFactory.create("a", lat, lon), RowFactory.create(" a", lat, lon),
+                RowFactory.create("n\nl", lat, lon), RowFactory.create("q", lat, lon));
+        SparkBatch.Summary s = SparkBatch.run(spark, spark.createDataFrame(table, schema), main.settings(),
+                SparkBatch.Order.INPUT, 2, 1);
+        assertEquals(4, s.rows());
+        assertEquals(1, s.ok());
+        List<CSVRecord> results = sparkRecords(out);
+        assertEquals(List.of("a", "a", "n?l", "q"), results.stream().map(r -> r.get("id")).sorted().toList());
+        assertEquals(1, results.stream().filter(r -> r.get("id").equals("a") && r.get("status").equals("ok")).count());
+        assertTrue(results.stream().anyMatch(r -> r.get("error").contains("duplicate id 'a'")), results.toString());
+        CSVRecord q = results.stream().filter(r -> r.get("id").equals("q")).findFirst().orElseThrow();
+        assertTrue(q.get("error").contains("q-distance.png: a folder of that name is in the way"), q.get("error"));
+        assertTrue(Files.isDirectory(out.resolve("q-distance.png")) && names(out.resolve("q-distance.png")).isEmpty());
+        assertTrue(!Files.exists(out.resolve("q.json")), "no json claims q's set complete");
+        assertTrue(!Files.exists(out.resolve(SparkBatch.LOCK_FILE)), "the job's claim is released");
+
+        // An output folder that is a file.
+        Path file = Files.writeString(tmp.resolve("a-file"), "x");
+        SparkBatch.OutputFolderException isFile = org.junit.jupiter.api.Assertions.assertThrows(
+                SparkBatch.OutputFolderException.class, () -> SparkBatch.claim(file.toString(), conf));
+        assertTrue(isFile.getMessage().contains("is a file"), isFile.getMessage());
+    }
+
+    /** A DEM folder named by a plain path with URI syntax in it ('%', '[') is that folder (every row failed). */
+    @Test
+    void aPlainDemPathIsNotReadAsAUri() {
+        JobSettings s = new JobSettings();
+        assertEquals(Path.of("/data/dem%x[1]"), ExecutorRenderer.localDem("/data/dem%x[1]", s));
+        assertEquals(Path.of("/data/dem 1"), ExecutorRenderer.localDem("file:///data/dem%201", s));
     }
 
     static List<CSVRecord> sparkRecords(Path out) throws IOException {
