@@ -25,7 +25,8 @@ import mil.nga.tiff.TiffReader;
  * predictors; striped and tiled layouts; Cloud-Optimized GeoTIFFs (the full-resolution image is read,
  * overviews are ignored); georeferencing by one ModelTiepoint plus ModelPixelScale, or by a
  * ModelTransformation without rotation; PixelIsArea (the default) and PixelIsPoint; the GDAL_NODATA
- * tag (samples equal to it, and NaN, are voids); either byte order. Refused, with a one-line message
+ * tag (samples equal to it, and NaN, are voids); a band scale and offset in the GDAL_METADATA tag (height = value ×
+ * scale + offset, e.g. heights stored in decimetres); either byte order. Refused, with a one-line message
  * naming the file: projected CRSs, a prime meridian other than Greenwich, heights in feet (a
  * VerticalUnitsGeoKey other than metre, or a vertical CRS named "(ft)"/"(ftUS)" as EPSG names them),
  * rotated or control-point georeferencing, several bands, complex, 1-bit, 16-bit float or 64-bit integer samples, other
@@ -214,7 +215,7 @@ public final class GeoTiffReader {
 
     /** A neighbour's height at a coordinate (its pixels, bilinear, up to one pixel beyond), NaN if void. */
     private static float at(Grid n, double latDeg, double lonDeg) {
-        return sample(n, n.rowOf(latDeg), n.colOf(n.unwrap(lonDeg)));
+        return sample(n, n.rowOf(latDeg), n.colOf(n.unwrap(lonDeg)), true, true);
     }
 
     /**
@@ -469,6 +470,8 @@ public final class GeoTiffReader {
         }
         double nodata = nodata(source, dir);
         float nodataFloat = (float) nodata;
+        double[] scaleOffset = scaleOffset(source, dir);
+        double scale = scaleOffset[0], offset = scaleOffset[1];
         float[] out = new float[width * height];
         mil.nga.tiff.compression.CompressionDecoder decoder = dir.getDecoder();
         for (int by = 0; by * bh < height; by++) {
@@ -518,7 +521,10 @@ public final class GeoTiffReader {
                         int x = bx * bw + c, i = y * width + x;
                         if (Double.isNaN(v) || v == nodata || (bits == 32 && floating && (float) v == nodataFloat)) {
                             out[i] = Float.NaN;
-                        } else if (v < HgtReader.MIN_PLAUSIBLE_METRES || v > HgtReader.MAX_PLAUSIBLE_METRES) {
+                            continue;
+                        }
+                        v = v * scale + offset; // the stored value → metres (GDAL's scale and offset; 1 and 0 by default)
+                        if (v < HgtReader.MIN_PLAUSIBLE_METRES || v > HgtReader.MAX_PLAUSIBLE_METRES) {
                             throw new DemException(String.format(Locale.ROOT, "%s: implausible height %s m at row %d, column %d "
                                     + "(corrupt, not metres, or a nodata value without a GDAL_NODATA tag%s)", source,
                                     fmt(v), y, x, Double.isNaN(nodata) ? "" : "; GDAL_NODATA is " + fmt(nodata)));
@@ -565,6 +571,44 @@ public final class GeoTiffReader {
 
     private static String fmt(double v) {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    /**
+     * The band's scale and offset from the GDAL_METADATA tag ({@code <Item name="SCALE" role="scale">}, {@code
+     * role="offset"}, of band 0 or of no band): height = stored value × scale + offset. {1, 0} when absent. A file in
+     * decimetres or centimetres (scale 0.1, 0.01) was read as metres, heights 10 or 100 times too large, or one with
+     * scale 2 at half its height.
+     */
+    static double[] scaleOffset(String source, FileDirectory dir) {
+        String xml = dir.getStringEntryValue(FieldTagType.GDAL_METADATA);
+        double[] out = {1, 0};
+        if (xml == null || xml.isBlank()) {
+            return out;
+        }
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("<Item\\s([^>]*)>([^<]*)</Item>").matcher(xml);
+        while (m.find()) {
+            String attributes = m.group(1);
+            java.util.regex.Matcher role = java.util.regex.Pattern.compile("role\\s*=\\s*\"(scale|offset)\"",
+                    java.util.regex.Pattern.CASE_INSENSITIVE).matcher(attributes);
+            java.util.regex.Matcher sample = java.util.regex.Pattern.compile("sample\\s*=\\s*\"(\\d+)\"").matcher(attributes);
+            if (!role.find() || (sample.find() && !sample.group(1).equals("0"))) {
+                continue;
+            }
+            double v;
+            try {
+                v = Double.parseDouble(m.group(2).trim());
+            } catch (NumberFormatException e) {
+                throw new DemException(source + ": GDAL metadata " + role.group(1).toLowerCase(Locale.ROOT) + " '"
+                        + m.group(2).trim() + "' is not a number");
+            }
+            boolean isScale = role.group(1).equalsIgnoreCase("scale");
+            if (!Double.isFinite(v) || (isScale && v == 0)) {
+                throw new DemException(source + ": GDAL metadata " + (isScale ? "scale" : "offset") + " " + fmt(v)
+                        + " cannot turn stored values into heights");
+            }
+            out[isScale ? 0 : 1] = v;
+        }
+        return out;
     }
 
     /** The GDAL_NODATA value, NaN if none (NaN samples are voids anyway). */
@@ -626,10 +670,10 @@ public final class GeoTiffReader {
      * (the finer of the two directions, so Copernicus' width-reduced tiles above 50° come out square
      * at their latitude resolution) capped at {@link #MAX_INTERVALS_PER_DEGREE}. A tile sample on a
      * pixel centre (within 10⁻⁶ pixel) takes that pixel's height exactly; others are bilinear from the
-     * four pixels around them, void if any of those with a non-zero weight is void. Samples up to one
-     * pixel beyond the outermost pixel centres (Copernicus tiles hold no southern row and eastern
-     * column: they are the neighbours' first) take the edge pixels' heights; samples farther out are
-     * voids. Voids are then filled as for .hgt tiles.
+     * four pixels around them, void if any of those with a non-zero weight is void. Samples on the tile's
+     * edges up to one pixel beyond the outermost pixel centres (Copernicus tiles hold no southern row and eastern
+     * column: they are the neighbours' first) take the edge pixels' heights; other samples beyond the pixel centres
+     * (a file covering part of its tile) are voids, for the void fill or the next DEM source. Voids are then filled as for .hgt tiles.
      *
      * @throws DemException if the grid does not cover the tile's centre (a file named for another tile)
      */
@@ -662,7 +706,11 @@ public final class GeoTiffReader {
         for (int r = 0; r < n; r++) {
             double row = g.rowOf(id.latSouthDeg() + 1 - (double) r / ipd);
             for (int c = 0; c < n; c++) {
-                h[r * n + c] = sample(g, row, cols[c]);
+                // Only the tile's own edge samples may take the edge pixels' heights from up to a pixel away (a
+                // Copernicus tile's missing last row and column): inside the tile, beyond a file that covers part of
+                // it, samples are voids (a repeated edge column was taken as data, and the next DEM source's blend
+                // carried its error kilometres in).
+                h[r * n + c] = sample(g, row, cols[c], r == 0 || r == n - 1, c == 0 || c == n - 1);
             }
         }
         List<String> warnings = new ArrayList<>(earlierWarnings);
@@ -679,11 +727,16 @@ public final class GeoTiffReader {
         return new HgtTile(id, g.source(), n, h, voids, mask, warnings).withVerticalDatum(g.verticalDatum());
     }
 
-    /** Height at fractional (row, col) of the grid, NaN if void or out of range (see {@link #toTile}). */
-    static float sample(Grid g, double row, double col) {
+    /**
+     * Height at fractional (row, col) of the grid, NaN if void or out of range (see {@link #toTile}): up to one pixel
+     * beyond the outermost pixel centres where {@code rowMayClamp}/{@code colMayClamp} allow it (the edge pixels'
+     * heights), else only within them.
+     */
+    static float sample(Grid g, double row, double col, boolean rowMayClamp, boolean colMayClamp) {
         row = snap(row);
         col = snap(col);
-        if (!(row >= -1 && row <= g.height() && col >= -1 && col <= g.width())) {
+        double rowSlack = rowMayClamp ? 1 : 0, colSlack = colMayClamp ? 1 : 0;
+        if (!(row >= -rowSlack && row <= g.height() - 1 + rowSlack && col >= -colSlack && col <= g.width() - 1 + colSlack)) {
             return Float.NaN;
         }
         row = Math.max(0, Math.min(g.height() - 1, row));

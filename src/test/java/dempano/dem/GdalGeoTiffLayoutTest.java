@@ -62,7 +62,11 @@ class GdalGeoTiffLayoutTest {
                 Arguments.of("COG int16 uncompressed, no overviews", "N43E006", "-of COG -ot Int16 -co COMPRESS=NONE -co OVERVIEWS=NONE"),
                 Arguments.of("PixelIsArea int16 DEFLATE", "N46E008", "-ot Int16 -co COMPRESS=DEFLATE -mo AREA_OR_POINT=Area"),
                 Arguments.of("PixelIsArea float32 COG", "N46E008", "-of COG -ot Float32 -mo AREA_OR_POINT=Area"),
-                Arguments.of("PixelIsPoint float32 tiled", "N43E006", "-ot Float32 -mo AREA_OR_POINT=Point " + TILED));
+                Arguments.of("PixelIsPoint float32 tiled", "N43E006", "-ot Float32 -mo AREA_OR_POINT=Point " + TILED),
+                // Heights stored scaled, with GDAL's band scale and offset (GDAL_METADATA): read as metres they were
+                // 10 times too high, or 500 m too high (a hostile test: scale 2 rendered at half the height, silently).
+                Arguments.of("int32 decimetres, scale 0.1", "N46E008", "-ot Int32 -scale 0 1000 0 10000 -a_scale 0.1"),
+                Arguments.of("int16 offset -500", "N43E006", "-ot Int16 -scale 0 1000 500 1500 -a_offset -500"));
     }
 
     @ParameterizedTest(name = "{0} ({1})")
@@ -173,6 +177,43 @@ class GdalGeoTiffLayoutTest {
     }
 
     /** Same samples (bit for bit) and the same void mask. */
+    /**
+     * A GeoTIFF holding the western 700 of a tile's 1201 columns (a hostile test): its column 700 repeated column 699
+     * instead of being void, and as the first of two DEM folders that false column was blended into the second's
+     * heights up to 50 m off, still 3 m some 8 km in. Now the samples beyond the file are voids and the second folder,
+     * the whole tile, fills them with its own heights exactly.
+     */
+    @Test
+    void aGeoTiffCoveringPartOfItsTileLeavesTheRestToTheNextSource() throws IOException {
+        Path hgt = SharedData.demFile("N43E006.hgt");
+        Path part = Files.createDirectories(dir.resolve("part")), whole = Files.createDirectories(dir.resolve("whole"));
+        Gdal.translate(hgt, part.resolve("N43E006.tif"), "-srcwin", "0", "0", "700", "1201");
+        Files.copy(hgt, whole.resolve("N43E006.hgt"));
+        HgtTile ref = HgtReader.read(hgt), alone = GeoTiffReader.read(part.resolve("N43E006.tif"));
+        for (int r = 0; r < 1201; r++) {
+            if (!ref.isFilledVoid(r, 699)) {
+                assertEquals(ref.heightMetres(r, 699), alone.heightMetres(r, 699), "column 699, row " + r);
+            }
+            assertTrue(alone.isFilledVoid(r, 700), "column 700 lies beyond the file: a void, row " + r);
+        }
+        List<String> warnings = new ArrayList<>();
+        DemSource both = PriorityDem.open(List.of(part, whole), DemFill.DEFAULT, warnings::add);
+        assertSameHeights(ref, both.tile(TileId.of(43, 6)).orElseThrow(), "the part, then the whole tile");
+    }
+
+    /** Every sample's height equal (voids aside: the merged tile has none where the second source has data). */
+    static void assertSameHeights(HgtTile expected, HgtTile actual, String what) {
+        int n = expected.samplesPerSide();
+        assertEquals(n, actual.samplesPerSide(), what);
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                if (!expected.isFilledVoid(r, c)) {
+                    assertEquals(expected.heightMetres(r, c), actual.heightMetres(r, c), what + ": sample " + r + ", " + c);
+                }
+            }
+        }
+    }
+
     static void assertSameTile(HgtTile expected, HgtTile actual, String what) {
         int n = expected.samplesPerSide();
         assertEquals(n, actual.samplesPerSide(), what + ": samples per side");
