@@ -71,6 +71,12 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
             throw new DemException("'" + fileName + "' names a tile outside the globe (lat " + (south ? "S" : "N")
                     + lat + ", lon " + (west ? "W" : "E") + lon + ")");
         }
+        if ((south && lat == 0) || (west && lon == 0)) {
+            // A tile is named by its south-west corner: S00 and W000 name none (0…1° S is S01, 0…1° W is W001); read as
+            // N00/E000 such a file was placed a degree off without a word.
+            throw new DemException("'" + fileName + "' names no tile: a tile is named by its south-west corner, so "
+                    + (south && lat == 0 ? "0…1° S is S01 and 0…1° N is N00" : "0…1° W is W001 and 0…1° E is E000"));
+        }
         return new TileId(south ? -lat : lat, west ? -lon : lon);
     }
 

@@ -146,6 +146,9 @@ public final class OutputSet implements AutoCloseable {
      * @throws IllegalArgumentException for an empty prefix or one that names a folder ({@code out/})
      * @throws IOException naming the prefix, the folder and the reason when files cannot be created there
      */
+    /** The longest file name, bytes, on Linux's file systems (ext4, xfs, btrfs, tmpfs). */
+    static final int MAX_NAME_BYTES = 255;
+
     public static OutputSet open(String prefix) throws IOException {
         Path abs = checkPrefix(prefix);
         Path dir = abs.getParent();
@@ -156,15 +159,25 @@ public final class OutputSet implements AutoCloseable {
         if (!Files.isDirectory(dir)) {
             throw new IOException("cannot write " + prefix + ".*: " + dir + " is a file, not a folder");
         }
+        long start = ProcessHandle.current().info().startInstant().map(i -> i.toEpochMilli()).orElse(0L);
+        String stagingName = "." + base + STAGING_INFIX + ProcessHandle.current().pid() + "-" + start + "-"
+                + String.format("%08x", RANDOM.nextInt());
+        int nameBytes = base.getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
+        int extra = stagingName.getBytes(java.nio.charset.StandardCharsets.UTF_8).length - nameBytes;
+        if (nameBytes + extra > MAX_NAME_BYTES) {
+            // The hidden staging folder is the longest name a set needs; a prefix whose outputs all fit failed there with
+            // "file name too long", which did not say what to shorten.
+            throw new IOException("cannot write " + prefix + ".*: its last part is " + nameBytes + " bytes long, at most "
+                    + (MAX_NAME_BYTES - extra) + " fit (file names have at most " + MAX_NAME_BYTES + " bytes, and the"
+                    + " hidden folder the files are staged in adds " + extra + "): shorten it");
+        }
         try {
             withLock(dir, base, () -> recover(dir, base));
         } catch (IOException e) {
             throw new IOException("cannot write " + prefix + ".*: cannot create files in " + dir + " ("
                     + IoMessages.reason(e) + ")", e);
         }
-        long start = ProcessHandle.current().info().startInstant().map(i -> i.toEpochMilli()).orElse(0L);
-        Path staging = dir.resolve("." + base + STAGING_INFIX + ProcessHandle.current().pid() + "-" + start + "-"
-                + String.format("%08x", RANDOM.nextInt()));
+        Path staging = dir.resolve(stagingName);
         try {
             Files.createDirectory(staging);
         } catch (IOException e) {

@@ -35,7 +35,9 @@ class TileIdTest {
 
     @ParameterizedTest
     @CsvSource({"N46E008.png", "Copernicus_DSM_COG_10_N46_00_E008_DEM.tif", "X46E008.hgt", "N4E008.hgt", "N46E08.hgt", "N90E000.hgt", "N10E180.hgt",
-            "S91E000.hgt", "N10W181.hgt", "N46E008.zip", "N46E008.hgt.gz"})
+            "S91E000.hgt", "N10W181.hgt", "N46E008.zip", "N46E008.hgt.gz",
+            // No tile is named by a south-west corner at S00 or W000 (they were read as N00 and E000).
+            "S00E010.hgt", "N45W000.hgt", "s00w000.tif", "Copernicus_DSM_COG_10_S00_00_E010_00_DEM.tif"})
     void rejectsBadNames(String file) {
         DemException e = assertThrows(DemException.class, () -> TileId.parseFileName(file));
         assertTrue(e.getMessage().contains(file), e.getMessage());

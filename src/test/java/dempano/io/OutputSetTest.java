@@ -23,6 +23,23 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /** The set is all-or-nothing, takes the umask's permissions, and cleans up after killed runs. */
 class OutputSetTest {
+    /** A prefix too long for the staging folder's name is refused saying how long it may be; that length works. */
+    @Test
+    void aPrefixTooLongForTheStagingFolderSaysHowLongItMayBe(@TempDir Path dir) throws IOException {
+        // 225 bytes: every output name fits in 255, the hidden staging folder did not ("file name too long").
+        IOException e = assertThrows(IOException.class, () -> OutputSet.open(dir.resolve("y".repeat(225)).toString()));
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("its last part is 225 bytes long, at most (\\d+) fit")
+                .matcher(e.getMessage());
+        assertTrue(m.find() && e.getMessage().endsWith("shorten it"), e.getMessage());
+        int most = Integer.parseInt(m.group(1));
+        assertTrue(most > 200 && most < 225, e.getMessage());
+        try (OutputSet set = OutputSet.open(dir.resolve("y".repeat(most)).toString())) {
+            set.write(".json", out -> out.write("{}".getBytes(StandardCharsets.UTF_8)));
+            set.commit();
+        }
+        assertTrue(Files.exists(dir.resolve("y".repeat(most) + ".json")));
+    }
+
     /** Writes a set whose every file says which generation it belongs to; the JSON lists the files. */
     static void writeGeneration(Path dir, int generation, List<String> suffixes) throws IOException {
         try (OutputSet set = OutputSet.open(dir.resolve("p").toString())) {
