@@ -56,7 +56,8 @@ public final class PhotoCommand implements Callable<Integer> {
     Double sensorWidthMm;
     @Option(names = PhotoOverrides.FOCAL35, description = "35 mm-equivalent focal length, mm.")
     Double focal35Mm;
-    @Option(names = PhotoOverrides.HFOV, description = "Horizontal field of view of the displayed image, degrees.")
+    @Option(names = PhotoOverrides.HFOV, description = "Horizontal field of view of the displayed image, degrees (with --distortion: of the"
+            + " undistorted pinhole image; P.json's horizontalFovDeg is the distorted image's, edge to edge).")
     Double hfovDeg;
     @Option(names = "--distortion", paramLabel = "K1,K2,P1,P2,K3", split = ",", description = "OpenCV distortion coefficients.")
     double[] distortion;

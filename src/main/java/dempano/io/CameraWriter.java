@@ -111,7 +111,7 @@ public final class CameraWriter {
                     image.widthPx())));
         }
         if (extras.summits() != null) {
-            String json = SummitWriter.json(extras.summits()), csv = SummitWriter.csv(extras.summits());
+            String json = SummitWriter.json(extras.summits(), SummitWriter.CAMERA_PIXELS), csv = SummitWriter.csv(extras.summits());
             files.add(set.write("-summits.json", out -> out.write(json.getBytes(StandardCharsets.UTF_8))));
             files.add(set.write("-summits.csv", out -> out.write(csv.getBytes(StandardCharsets.UTF_8))));
         }
@@ -157,7 +157,7 @@ public final class CameraWriter {
             g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, Math.max(11, Math.min(40, h / 40))));
             g.setStroke(new BasicStroke(2f));
             for (SummitSighting s : summits) {
-                double x = s.pixelX() - 0.5, y = s.pixelY() - 0.5; // OpenCV pixel coordinate
+                double x = s.pixelX(), y = s.pixelY(); // OpenCV pixel coordinates
                 g.setColor(s.visible() ? Color.YELLOW : Color.LIGHT_GRAY);
                 g.drawOval((int) Math.round(x) - 6, (int) Math.round(y) - 6, 12, 12);
                 if (s.visible()) {

@@ -90,7 +90,18 @@ public final class SummitWriter {
         return List.of(json, csv, png);
     }
 
+    /** What pixelX/pixelY mean in a panorama's summit files. */
+    static final String PANORAMA_PIXELS = "pixelX, pixelY: panorama pixel coordinates, column c spanning [c, c + 1) (its"
+            + " centre at c + 0.5), row 0's top edge at 0";
+    /** What pixelX/pixelY mean in a camera image's summit files (as its P.json says). */
+    static final String CAMERA_PIXELS = "pixelX, pixelY: OpenCV pixel coordinates, pixel (column i, row j) centred at"
+            + " (i, j), as P.json's conventions say";
+
     static String json(List<SummitSighting> sightings) {
+        return json(sightings, PANORAMA_PIXELS);
+    }
+
+    static String json(List<SummitSighting> sightings, String pixels) {
         JsonArray a = new JsonArray();
         for (SummitSighting s : sightings) {
             JsonObject o = new JsonObject();
@@ -113,7 +124,7 @@ public final class SummitWriter {
             a.add(o);
         }
         JsonObject root = new JsonObject();
-        root.addProperty("note", "elevationFromDem: the list gave no height, elevationMetres is the DEM's there;"
+        root.addProperty("note", pixels + "; elevationFromDem: the list gave no height, elevationMetres is the DEM's there;"
                 + " mapDistanceMetres: distance-map value at the summit's pixel (null: sky or outside);"
                 + " seenDistanceMetres: terrain seen at the summit within the tolerance window (null: none);"
                 + " demHeightMetres: the DEM's height at the summit's position (null: not looked up);"

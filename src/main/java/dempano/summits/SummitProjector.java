@@ -41,8 +41,10 @@ public final class SummitProjector {
     /**
      * Every summit of the list within range that lies on a camera's image (or within a pixel of its edge), in
      * list order, placed with the same geometry as {@link #project(Panorama, SummitList)} and the camera's own
-     * model ({@link dempano.camera.CameraView#pixelOf}): {@link SummitSighting#pixelX()} is the image column
-     * coordinate with pixel centres at c + 0.5 (OpenCV's px + 0.5), likewise {@code pixelY} for rows. The
+     * model ({@link dempano.camera.CameraView#pixelOf}): {@link SummitSighting#pixelX()} and {@code pixelY} are
+     * OpenCV pixel coordinates, pixel (i, j)'s centre at (i, j), as the camera's P.json declares them (they were
+     * half a pixel off that, in the panorama's convention: read as OpenCV, a distance lookup hit the neighbouring
+     * pixel for two summits in three). The
      * visibility window is as the panorama's, in image columns and rows at the camera's focal length.
      *
      * @throws IllegalStateException when the image was rendered without distances
@@ -111,7 +113,7 @@ public final class SummitProjector {
             }
             boolean visible = !Double.isNaN(seen) && Math.abs(seen - slant) <= tolerance;
             double ground = Geodesy.distanceMetres(m.latDeg(), m.lonDeg(), s.latDeg(), s.lonDeg());
-            out.add(new SummitSighting(s, az, el, px[0] + 0.5, px[1] + 0.5, slant, ground, atPixel, seen, visible));
+            out.add(new SummitSighting(s, az, el, px[0], px[1], slant, ground, atPixel, seen, visible));
         }
         return out;
     }

@@ -6,8 +6,10 @@ package dempano.summits;
  * @param summit             the surveyed summit
  * @param azimuthDeg         direction from the eye, degrees clockwise from true north, [0, 360)
  * @param elevationAngleDeg  apparent angle above the eye's horizontal (curvature and refraction applied), degrees
- * @param pixelX             panorama column coordinate (pixel centres at c + 0.5)
- * @param pixelY             panorama row coordinate (row 0's top edge at 0); may lie outside the image
+ * @param pixelX             panorama column coordinate (pixel centres at c + 0.5); in a camera image, OpenCV's (pixel
+ *                           i's centre at i), as the camera's P.json declares
+ * @param pixelY             panorama row coordinate (row 0's top edge at 0); in a camera image, OpenCV's; may lie
+ *                           outside the image
  * @param slantMetres        straight-line distance from the eye to the (refraction-lifted) summit, metres
  * @param groundMetres       geodesic distance on the WGS84 ellipsoid from the viewpoint, metres
  * @param mapDistanceMetres  distance-map value at the summit's pixel (+∞ sky; NaN outside the image)
