@@ -156,17 +156,58 @@ public final class CameraWriter {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, Math.max(11, Math.min(40, h / 40))));
             g.setStroke(new BasicStroke(2f));
-            for (SummitSighting s : summits) {
-                double x = s.pixelX(), y = s.pixelY(); // OpenCV pixel coordinates
-                g.setColor(s.visible() ? Color.YELLOW : Color.LIGHT_GRAY);
-                g.drawOval((int) Math.round(x) - 6, (int) Math.round(y) - 6, 12, 12);
-                if (s.visible()) {
-                    String label = SummitWriter.text(s);
-                    g.drawString(label, (int) Math.round(x) + 9, (int) Math.round(y) - 9);
+            for (boolean visible : new boolean[] {false, true}) { // the visible rings on top
+                for (SummitSighting s : summits) {
+                    if (s.visible() == visible) {
+                        g.setColor(visible ? Color.YELLOW : Color.LIGHT_GRAY);
+                        g.drawOval((int) Math.round(s.pixelX()) - 6, (int) Math.round(s.pixelY()) - 6, 12, 12);
+                    }
                 }
+            }
+            java.awt.FontMetrics fm = g.getFontMetrics();
+            for (Label l : labels(summits, fm::stringWidth, fm.getAscent(), fm.getDescent(), w, h)) {
+                g.setColor(Color.BLACK); // a shadow: legible over sky and snow alike
+                g.drawString(l.text(), l.x() + 1, l.baseline() + 1);
+                g.setColor(Color.YELLOW);
+                g.drawString(l.text(), l.x(), l.baseline());
             }
         }
         g.dispose();
+        return out;
+    }
+
+    /** A summit label placed on the overlay: its text, left edge and baseline, pixels. */
+    record Label(String text, int x, int baseline) {
+    }
+
+    /**
+     * The labels of the visible summits that fit without overlapping, highest summit first (as the panorama's labels
+     * are chosen): each up and to the right of its ring, or to the left where it would leave the image, and left out
+     * where its box would overlap a label already placed (they were all drawn, piled on one another along a
+     * skyline full of summits, none legible).
+     *
+     * @param width   a text's width, pixels
+     * @param ascent  the font's ascent, pixels
+     * @param descent the font's descent, pixels
+     */
+    static List<Label> labels(List<SummitSighting> summits, java.util.function.ToIntFunction<String> width, int ascent,
+                              int descent, int imageWidth, int imageHeight) {
+        List<SummitSighting> visible = summits.stream().filter(SummitSighting::visible)
+                .sorted(SummitWriter.LabelOrder.HEIGHT.comparator()).toList();
+        List<java.awt.Rectangle> taken = new java.util.ArrayList<>();
+        List<Label> out = new java.util.ArrayList<>();
+        for (SummitSighting s : visible) {
+            String text = SummitWriter.text(s);
+            int tw = width.applyAsInt(text), x = (int) Math.round(s.pixelX()), y = (int) Math.round(s.pixelY());
+            int left = x + 9 + tw <= imageWidth ? x + 9 : x - 9 - tw;
+            int baseline = Math.max(ascent, y - 9);
+            java.awt.Rectangle box = new java.awt.Rectangle(left - 2, baseline - ascent - 2, tw + 4, ascent + descent + 4);
+            if (left < 0 || taken.stream().anyMatch(box::intersects)) {
+                continue;
+            }
+            taken.add(box);
+            out.add(new Label(text, left, baseline));
+        }
         return out;
     }
 

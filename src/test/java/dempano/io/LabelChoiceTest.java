@@ -69,4 +69,32 @@ class LabelChoiceTest {
         assertThrows(IllegalArgumentException.class, () -> new SummitWriter.LabelOptions(-1, Double.NaN, LabelOrder.HEIGHT));
         assertThrows(IllegalArgumentException.class, () -> new SummitWriter.LabelOptions(0, -3, LabelOrder.HEIGHT));
     }
+
+    /** The camera overlay's labels: highest first, none overlapping, inside the image, only visible summits. */
+    @Test
+    void cameraOverlayLabelsDoNotOverlap() {
+        List<SummitSighting> s = List.of(
+                at("Low", 100, 100, 2000, 1, 5000, true), at("High", 102, 101, 3000, 1, 5000, true),
+                at("Mid", 101, 99, 2500, 1, 5000, true), at("Far", 400, 200, 2200, 1, 5000, true),
+                at("Edge", 590, 300, 2100, 1, 5000, true), at("Hidden", 250, 250, 4000, 1, 5000, false));
+        List<CameraWriter.Label> labels = CameraWriter.labels(s, t -> 7 * t.length(), 10, 3, 600, 400);
+        List<String> placed = labels.stream().map(l -> l.text().split(" ")[0]).toList();
+        // Of the three piled up at (100, 100) the highest is labelled; the others are clear of everything; the hidden one
+        // is not labelled.
+        assertEquals(List.of("High", "Far", "Edge"), placed);
+        for (int i = 0; i < labels.size(); i++) {
+            CameraWriter.Label a = labels.get(i);
+            int aw = 7 * a.text().length();
+            assertTrue(a.x() >= 0 && a.x() + aw <= 600 && a.baseline() - 10 >= 0, a.toString());
+            for (int j = i + 1; j < labels.size(); j++) {
+                CameraWriter.Label b = labels.get(j);
+                int bw = 7 * b.text().length();
+                boolean apart = a.x() + aw <= b.x() || b.x() + bw <= a.x() || a.baseline() + 3 <= b.baseline() - 10
+                        || b.baseline() + 3 <= a.baseline() - 10;
+                assertTrue(apart, a + " and " + b);
+            }
+        }
+        // The one at the right edge reads leftwards from its ring.
+        assertTrue(labels.get(2).x() < 590, labels.get(2).toString());
+    }
 }
