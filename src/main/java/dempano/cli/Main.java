@@ -256,6 +256,9 @@ public final class Main implements Callable<Integer> {
                 .withAltitudeMetres(given("--altitude-m", altitudeMetres))
                 .withSnapToSummitMetres(given("--snap-to-summit-m", snapToSummitMetres))
                 .withClearViewMetres(given("--clear-view-m", clearViewMetres));
+        if (altitudeMetres != null && panorama.offsetMetres != 0) { // the offset was ignored without a word
+            throw new IllegalArgumentException("--altitude-m and --offset-m both set the standing height (an absolute altitude, or the DEM's height plus an offset): give one");
+        }
         dempano.io.OutputSet.checkPrefix(out); // an empty or folder prefix is a bad argument (exit 2)
         String out = context.resolve(this.out);
         Path outParent = Path.of(out).toAbsolutePath().getParent();

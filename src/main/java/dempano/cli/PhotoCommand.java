@@ -184,6 +184,9 @@ public final class PhotoCommand implements Callable<Integer> {
         }
         o = altitudeMetres == null ? o : o.withAltitudeMetres(finite(PhotoOverrides.ALTITUDE, altitudeMetres));
         o = offsetMetres == null ? o : o.withOffsetMetres(finite(PhotoOverrides.OFFSET, offsetMetres));
+        if (altitudeMetres != null && offsetMetres != null) { // the offset was ignored without a word
+            throw new IllegalArgumentException(PhotoOverrides.ALTITUDE + " and " + PhotoOverrides.OFFSET + " both set the standing height (an absolute altitude, or the DEM's height plus an offset): give one");
+        }
         o = cameraHeightMetres == null ? o : o.withCameraHeightMetres(finite(PhotoOverrides.CAMERA_HEIGHT, cameraHeightMetres));
         o = headingDeg == null ? o : o.withHeadingDeg(within(PhotoOverrides.HEADING, headingDeg, PhotoOverrides.HEADING_LIMIT_DEG));
         o = declinationDeg == null ? o : o.withDeclinationDeg(within(PhotoOverrides.DECLINATION, declinationDeg,

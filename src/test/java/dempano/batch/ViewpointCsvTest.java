@@ -48,6 +48,9 @@ class ViewpointCsvTest {
             "a,,8,,,,,                                    | latitude is empty",
             "a,46,8,abc,,,,                               | altitude 'abc' is not a decimal number",
             "a,46,8,,12m,,,                               | offset '12m' is not a decimal number",
+            "a,46,8,2000,5,,,                             | altitude_m and offset_m both set the standing height",
+            "a,46,8,2000,,,,                              | -",
+            "a,46,8,,5,,,                                 | -",
             "a,46,8,,,-1,,                                | eye height must be a number of metres in [0, 1e6)",
             "a,46,8,,,,0.01,                              | range must be between 0.1 and",
             "a,46,8,,,,,0                                 | pixels per degree",
@@ -122,13 +125,14 @@ class ViewpointCsvTest {
     @Test
     void optionalColumnsOverrideTheDefaultsAndEmptyCellsKeepThem() throws ViewpointCsvException {
         List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd\n"
-                + "full,46.5,8.25,3000,-2,10,20,4\n"
-                + "empty,46.5,8.25,,,,,\n").rows();
+                + "full,46.5,8.25,3000,,10,20,4\n"
+                + "empty,46.5,8.25,,,,,\n"
+                + "offset,46.5,8.25,,-2,,,\n").rows(); // an altitude and an offset in one row: that row's error
         PanoramaRequest full = rows.get(0).request(), empty = rows.get(1).request();
         assertEquals(46.5, full.latDeg());
         assertEquals(8.25, full.lonDeg());
         assertEquals(3000, full.altitudeMetres());
-        assertEquals(-2, full.offsetMetres());
+        assertEquals(-2, rows.get(2).request().offsetMetres());
         assertEquals(10, full.eyeHeightMetres());
         assertEquals(20_000, full.rangeMetres());
         assertEquals(4, full.pixelsPerDegree());

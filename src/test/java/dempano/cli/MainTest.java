@@ -52,6 +52,8 @@ class MainTest {
             "--lat 46 --lon 8 --dem-dir . --snap-to-summit-m NaN|--snap-to-summit-m must be a number, got NaN",
             "--lat 46 --lon 8 --dem-dir . --label-spacing-px NaN|--label-spacing-px must be a number, got NaN",
             "--lat 46 --lon 8 --dem-dir . --offset-m 1e300|offset must be a number of metres within ±1e6",
+            "--lat 46 --lon 8 --dem-dir . --altitude-m 3000 --offset-m 50|--altitude-m and --offset-m both set the standing height",
+            "photo --lat 46 --lon 8 --dem-dir . --width-px 10 --height-px 10 --altitude-m 3000 --offset-m 50|--altitude-m and --offset-m both set the standing height",
             "--lat 46 --lon 8 --dem-dir . --eye-height-m 1e9|eye height must be a number of metres in [0, 1e6)",
             "--lat 0x1p5 --lon 8 --dem-dir .|'0x1p5' is not a decimal number",
             "fly --lat 100 --lon 8 --dem-dir .|latitude must be in",
