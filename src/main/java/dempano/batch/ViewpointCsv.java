@@ -281,6 +281,11 @@ public final class ViewpointCsv {
             }
         }
         try {
+            if (!cell(f, columns, ALTITUDE_M).isEmpty() && !cell(f, columns, OFFSET_M).isEmpty()) {
+                // The offset was ignored without a word beside an altitude (panorama and photo rows alike).
+                throw new IllegalArgumentException("altitude_m and offset_m both set the standing height (an absolute"
+                        + " altitude, or the DEM's height plus an offset): give one");
+            }
             String image = cell(f, columns, IMAGE);
             if (!image.isEmpty()) {
                 return photoRow(line, id, image, f, columns, defaults);
@@ -296,10 +301,6 @@ public final class ViewpointCsv {
             double altitude = number(f, columns, ALTITUDE_M, "altitude", Double.NaN);
             if (!Double.isNaN(altitude)) {
                 r = r.withAltitudeMetres(altitude);
-                if (!Double.isNaN(number(f, columns, OFFSET_M, "offset", Double.NaN))) {
-                    // The offset was ignored without a word beside an altitude.
-                    throw new IllegalArgumentException("altitude_m and offset_m" + " both set the standing height (an absolute altitude, or the DEM's height plus an offset): give one");
-                }
             }
             r = r.withOffsetMetres(number(f, columns, OFFSET_M, "offset", r.offsetMetres()))
                     .withEyeHeightMetres(number(f, columns, EYE_HEIGHT_M, "eye height", r.eyeHeightMetres()))

@@ -123,6 +123,16 @@ class ViewpointCsvTest {
     }
 
     @Test
+    void aPhotoRowWithAnAltitudeAndAnOffsetIsAnError() throws ViewpointCsvException {
+        List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,image,heading_deg\n"
+                + "p,46.5,8.25,3000,5,a.jpg,10\n" + "q,46.5,8.25,3000,,a.jpg,10\n").rows();
+        assertFalse(rows.get(0).valid());
+        assertTrue(rows.get(0).error().startsWith("line 2: altitude_m and offset_m both set the standing height"),
+                rows.get(0).error());
+        assertTrue(rows.get(1).valid(), rows.get(1).error());
+    }
+
+    @Test
     void optionalColumnsOverrideTheDefaultsAndEmptyCellsKeepThem() throws ViewpointCsvException {
         List<BatchRow> rows = parse("id,lat,lon,altitude_m,offset_m,eye_height_m,range_km,ppd\n"
                 + "full,46.5,8.25,3000,,10,20,4\n"
