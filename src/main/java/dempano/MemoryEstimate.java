@@ -109,7 +109,7 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
     }
 
     private String breakdown() {
-        return String.format(Locale.ROOT, "%.0f M view pixels, %.0f M panorama pixels%s, tiles %.0f MB",
+        return String.format(Locale.ROOT, "%.2f M view pixels, %.2f M panorama pixels%s, tiles %.0f MB",
                 viewPixels / 1e6, panoramaPixels / 1e6, layers > 0 ? ", " + layers + " layers" : "", tileBytes / 1e6);
     }
 }

@@ -60,9 +60,47 @@ public final class PanoramaRenderer implements AutoCloseable {
     /** False after {@link #withoutMeshCache}. */
     private volatile boolean keepMeshes = true;
 
+    /** The thread creating the context ({@link #openInBackground}), else null. */
+    private final Thread starter;
+
     private PanoramaRenderer(DemSource dem, java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> handle) {
+        this(dem, handle, null);
+    }
+
+    private PanoramaRenderer(DemSource dem, java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> handle,
+                             Thread starter) {
         this.dem = dem;
         this.handle = handle;
+        this.starter = starter;
+    }
+
+    /**
+     * The context's handle, waiting while it is being created. Where the creating thread ended without a result (out
+     * of memory even for reporting its failure, as a resident process with a tiny heap showed) a wait would last for
+     * ever: that is a {@link java.util.concurrent.CompletionException} as any failure to create it.
+     */
+    private OffscreenRenderer.Handle awaitHandle() {
+        boolean interrupted = false; // waited for regardless, as join() did; the flag is kept
+        try {
+            while (true) {
+                try {
+                    return handle.get(200, java.util.concurrent.TimeUnit.MILLISECONDS);
+                } catch (java.util.concurrent.TimeoutException e) {
+                    if (starter != null && !starter.isAlive() && !handle.isDone()) {
+                        throw new java.util.concurrent.CompletionException(new dempano.render.GlUnavailableException(
+                                "the OpenGL context's start ended without a result (out of memory?)", null));
+                    }
+                } catch (java.util.concurrent.ExecutionException e) {
+                    throw new java.util.concurrent.CompletionException(e.getCause());
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /** True for the CPU reference renderer (no GL context). */
@@ -77,7 +115,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      */
     private OffscreenRenderer gl() {
         try {
-            return handle.join().renderer();
+            return awaitHandle().renderer();
         } catch (java.util.concurrent.CompletionException e) {
             if (e.getCause() instanceof RuntimeException re) {
                 throw re;
@@ -169,7 +207,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         }, "dempano-gl-start");
         starter.setDaemon(true);
         starter.start();
-        return new PanoramaRenderer(dem, pending);
+        return new PanoramaRenderer(dem, pending, starter);
     }
 
     /** The OpenGL renderer in use. */
@@ -759,7 +797,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         if (handle != null) {
             OffscreenRenderer.Handle h;
             try {
-                h = handle.join();
+                h = awaitHandle();
             } catch (java.util.concurrent.CompletionException e) {
                 return; // no context was made: nothing to end
             }

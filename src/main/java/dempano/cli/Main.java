@@ -72,6 +72,12 @@ public final class Main implements Callable<Integer> {
     Double clearViewMetres;
 
     public static void main(String[] args) {
+        if (!List.of(args).contains("fly")) {
+            // Images are drawn without a display: with DISPLAY set to an X server that cannot be reached (a stale
+            // DISPLAY in tmux or ssh), AWT failed after the render and every output was lost. The fly-through keeps AWT
+            // for its settings dialog.
+            System.setProperty("java.awt.headless", "true");
+        }
         // DEMPANO_RESIDENT=on: a panorama is rendered by this user's resident process for this installation (started
         // if none runs), which keeps the GL context, tiles and meshes warm; anything else, or no resident process to
         // be had, runs here. Decided before picocli is loaded: the client stays a small, quick JVM.
@@ -232,9 +238,9 @@ public final class Main implements Callable<Integer> {
 
     /** The way out of an out-of-memory failure, with the heap size in use. */
     static String outOfMemoryMessage(OutOfMemoryError e) {
-        return String.format(Locale.ROOT, "out of memory (%s; Java heap limit %.1f GB): lower --ppd, --elevation-range "
+        return String.format(Locale.ROOT, "out of memory (%s; Java heap limit %.0f MB): lower --ppd, --elevation-range "
                 + "or --range-km, or give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg", e.getMessage(),
-                Runtime.getRuntime().maxMemory() / 1e9, Math.max(2, 2 * (int) Math.ceil(Runtime.getRuntime().maxMemory() / 1e9)));
+                Runtime.getRuntime().maxMemory() / 1e6, Math.max(2, 2 * (int) Math.ceil(Runtime.getRuntime().maxMemory() / 1e9)));
     }
 
     @Override

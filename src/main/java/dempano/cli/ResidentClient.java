@@ -320,8 +320,11 @@ final class ResidentClient {
 
     /** Environment variables that can change a run's result or its GL context, all kept in the stamp. */
     private static boolean shapesTheRun(String name) {
+        // The JVM's own option variables and the dynamic linker's too: a process started under JDK_JAVA_OPTIONS=-Xmx24m
+        // served every later client, whose runs then failed for want of heap.
         return Set.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME", "DEMPANO_GL", "DEMPANO_DEBUG", "DISPLAY", "WAYLAND_DISPLAY",
-                "DEMPANO_RESIDENT_IDLE_S").contains(name)
+                "DEMPANO_RESIDENT_IDLE_S", "JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "LD_LIBRARY_PATH",
+                "LD_PRELOAD").contains(name)
                 || List.of("MESA_", "LIBGL_", "GALLIUM_", "LP_", "EGL_", "__GL", "__EGL").stream().anyMatch(name::startsWith);
     }
 
@@ -374,12 +377,28 @@ final class ResidentClient {
         return "";
     }
 
+    /**
+     * The environment with a relative {@code DEMPANO_CACHE_DIR} or {@code XDG_CACHE_HOME} made absolute against the
+     * client's working directory, as a local run takes it: the resident process, whose working directory is its socket
+     * folder, put the cache there instead (and clients in other folders shared it).
+     */
+    static Map<String, String> withAbsoluteCacheDirs(Map<String, String> env) {
+        Map<String, String> out = new java.util.HashMap<>(env);
+        for (String k : List.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME")) {
+            String v = env.get(k);
+            if (v != null && !v.isBlank() && !v.equalsIgnoreCase("off") && !Path.of(v).isAbsolute()) {
+                out.put(k, Path.of(v).toAbsolutePath().normalize().toString());
+            }
+        }
+        return out;
+    }
+
     static String stamp(Map<String, String> env) {
         StringBuilder s = new StringBuilder();
         s.append(System.getProperty("java.home")).append('\n').append(System.getProperty("java.vm.version")).append('\n');
         jvmOptions().forEach(o -> s.append(o).append('\n'));
         s.append(classPath());
-        new TreeMap<>(env).forEach((k, v) -> {
+        new TreeMap<>(withAbsoluteCacheDirs(env)).forEach((k, v) -> {
             if (shapesTheRun(k)) {
                 s.append(k).append('=').append(v).append('\n');
             }
@@ -419,6 +438,7 @@ final class ResidentClient {
         cmd.add(stamp);
         cmd.add(Integer.toString(idleSeconds(env)));
         ProcessBuilder pb = new ProcessBuilder(cmd);
+        pb.environment().putAll(withAbsoluteCacheDirs(pb.environment()));
         // Its own folder as working directory: every path of a run is the client's, resolved; and the folder this
         // client was started in is not held (kept from removal or unmounting) for as long as the process lives.
         pb.directory(socket.getParent().toFile());
@@ -443,6 +463,7 @@ final class ResidentClient {
         } catch (NumberFormatException e) {
             // said below
         }
-        throw new IllegalArgumentException("DEMPANO_RESIDENT_IDLE_S must be a whole number of seconds ≥ 1, got " + v);
+        throw new IllegalArgumentException("DEMPANO_RESIDENT_IDLE_S must be a whole number of seconds in [1, "
+                + Integer.MAX_VALUE + "], got " + v);
     }
 }

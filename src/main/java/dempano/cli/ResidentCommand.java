@@ -30,7 +30,13 @@ final class ResidentCommand implements Callable<Integer> {
             default -> throw new IllegalArgumentException("resident: the action is status or stop, got '" + action + "'");
         };
         java.util.Map<String, String> env = System.getenv();
-        Path dir = ResidentClient.directory(env);
+        Path dir;
+        try {
+            dir = ResidentClient.directory(env);
+        } catch (IOException e) { // it said the bare path ("dempano: /tmp/afile")
+            String file = e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null ? fs.getFile() + ": " : "";
+            throw new IOException("the resident processes' folder cannot be used: " + file + dempano.io.IoMessages.reason(e), e);
+        }
         List<Path> sockets;
         try (var files = java.nio.file.Files.list(dir)) {
             sockets = files.filter(f -> f.getFileName().toString().endsWith(".sock")).sorted().toList();

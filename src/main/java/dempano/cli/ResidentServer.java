@@ -74,6 +74,7 @@ public final class ResidentServer {
 
     /** {@code ResidentServer SOCKET STAMP IDLE_SECONDS}: what {@link ResidentClient} starts. */
     public static void main(String[] args) throws Exception {
+        System.setProperty("java.awt.headless", "true"); // as Main: a dead DISPLAY must not end the process
         if (args.length != 3) {
             System.err.println("usage: ResidentServer SOCKET STAMP IDLE_SECONDS (started by dempano itself)");
             System.exit(2);

@@ -42,6 +42,9 @@ final class ExecutorRenderer {
         String key = s.rendererKey();
         PanoramaRenderer r = OPEN.get(key);
         if (r == null) {
+            if (System.getProperty("java.awt.headless") == null) {
+                System.setProperty("java.awt.headless", "true"); // as the CLI: a stale DISPLAY must not fail the rows
+            }
             javax.imageio.ImageIO.setUseCache(false); // as dempano batch: PNGs through memory
             DemSource dem = dem(s);
             r = s.reference() ? PanoramaRenderer.openReference(dem) : PanoramaRenderer.open(dem);
