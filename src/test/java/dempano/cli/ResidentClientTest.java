@@ -31,6 +31,28 @@ import org.junit.jupiter.params.provider.CsvSource;
  * rendered in the client's own process where it cannot be had.
  */
 class ResidentClientTest {
+    /**
+     * What a process started under one environment would do differently for another client: the JVM's option variables
+     * and the dynamic linker's are in the stamp (a process started with JDK_JAVA_OPTIONS=-Xmx24m served later clients,
+     * whose runs failed for want of heap); a relative cache folder is the client's folder's (it was the socket folder's).
+     */
+    @Test
+    void theJvmsOptionVariablesAndRelativeCacheFoldersShapeTheStamp() {
+        Map<String, String> base = Map.of("PATH", "/usr/bin");
+        for (String k : List.of("JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "LD_LIBRARY_PATH", "LD_PRELOAD")) {
+            Map<String, String> with = new HashMap<>(base);
+            with.put(k, "-Xmx24m");
+            assertNotEquals(ResidentClient.stamp(base), ResidentClient.stamp(with), k);
+        }
+        Map<String, String> env = Map.of("DEMPANO_CACHE_DIR", "relc", "XDG_CACHE_HOME", "/abs/cache", "PATH", "/usr/bin");
+        Map<String, String> abs = ResidentClient.withAbsoluteCacheDirs(env);
+        assertEquals(Path.of("relc").toAbsolutePath().normalize().toString(), abs.get("DEMPANO_CACHE_DIR"));
+        assertEquals("/abs/cache", abs.get("XDG_CACHE_HOME"));
+        assertEquals("off", ResidentClient.withAbsoluteCacheDirs(Map.of("DEMPANO_CACHE_DIR", "off")).get("DEMPANO_CACHE_DIR"));
+        // The stamp sees the absolute folder: the same relative name from another folder is another process.
+        assertEquals(ResidentClient.stamp(env), ResidentClient.stamp(abs));
+    }
+
     @ParameterizedTest(name = "DEMPANO_RESIDENT={0}: {1}")
     @CsvSource({"on, true", "ON, true", "1, true", "true, true", "yes, true", "off, false", "0, false", "'', false",
             "maybe, false"})
