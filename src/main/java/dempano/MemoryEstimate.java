@@ -109,7 +109,12 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
     }
 
     private String breakdown() {
-        return String.format(Locale.ROOT, "%.2f M view pixels, %.2f M panorama pixels%s, tiles %.0f MB",
-                viewPixels / 1e6, panoramaPixels / 1e6, layers > 0 ? ", " + layers + " layers" : "", tileBytes / 1e6);
+        return String.format(Locale.ROOT, "%s M view pixels, %s M panorama pixels%s, tiles %.0f MB",
+                millions(viewPixels), millions(panoramaPixels), layers > 0 ? ", " + layers + " layers" : "", tileBytes / 1e6);
+    }
+
+    /** A pixel count in millions: whole above 10, else two decimals (a small view read "0 M"). */
+    private static String millions(long pixels) {
+        return String.format(Locale.ROOT, pixels >= 10_000_000 ? "%.0f" : "%.2f", pixels / 1e6);
     }
 }
