@@ -128,21 +128,38 @@ public final class ViewpointCsv {
      */
     public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
         Path parent = file.toAbsolutePath().getParent();
-        String text;
-        boolean malformed = false;
+        Decoded d;
         try {
-            byte[] bytes = Files.readAllBytes(file);
-            try {
-                text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
-            } catch (CharacterCodingException e) {
-                // Bytes that are no UTF-8 spoil the rows they are in, not the file: those rows are errors (below).
-                text = new String(bytes, StandardCharsets.UTF_8);
-                malformed = true;
-            }
+            d = decode(Files.readAllBytes(file));
         } catch (IOException e) {
             throw new ViewpointCsvException("cannot read the viewpoint file " + file + ": " + IoMessages.reason(e), e);
         }
-        return parse(file.toString(), text, defaults, parent, malformed);
+        return parse(file.toString(), d.text(), defaults, parent, d.malformed());
+    }
+
+    /** A row's error for cells holding bytes that are no UTF-8 (the row is spoilt, not the file). */
+    public static final String NOT_UTF8 = "not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)";
+
+    /**
+     * A viewpoint file's text.
+     *
+     * @param text      the bytes as UTF-8, a leading byte-order mark left out, bytes that are no UTF-8 as U+FFFD
+     * @param malformed whether there were such bytes: a row holding U+FFFD is then an error ({@link #NOT_UTF8})
+     */
+    public record Decoded(String text, boolean malformed) {
+    }
+
+    /** Decodes a viewpoint file's bytes (see {@link Decoded}); the Spark job reads its tables with it too. */
+    public static Decoded decode(byte[] bytes) {
+        String text;
+        boolean malformed = false;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (CharacterCodingException e) {
+            text = new String(bytes, StandardCharsets.UTF_8);
+            malformed = true;
+        }
+        return new Decoded(text.startsWith("\uFEFF") ? text.substring(1) : text, malformed);
     }
 
     /**
@@ -215,8 +232,7 @@ public final class ViewpointCsv {
                 }
                 if (notUtf8) {
                     String id = columns.get(ID) != null && f.size() > columns.get(ID) ? f.get(columns.get(ID)) : "";
-                    rows.add(BatchRow.invalid(line, BatchIds.printable(id), "line " + line
-                            + ": not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)"));
+                    rows.add(BatchRow.invalid(line, BatchIds.printable(id), "line " + line + ": " + NOT_UTF8));
                     continue;
                 }
                 BatchRow row = row(line, f, headerFields, columns, defaults, firstLineOfId);

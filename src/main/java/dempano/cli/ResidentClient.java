@@ -102,9 +102,7 @@ final class ResidentClient {
             return NOT_SERVED;
         } catch (IOException e) {
             // e.g. a folder where the socket should be: its path alone was the message
-            String why = e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null
-                    ? fs.getFile() + ": " + dempano.io.IoMessages.reason(e) : e.getMessage();
-            System.err.println("dempano: no resident process (" + why + "): rendering in this process");
+            System.err.println("dempano: no resident process (" + dempano.io.IoMessages.describe(e) + "): rendering in this process");
             return NOT_SERVED;
         } catch (RuntimeException e) {
             System.err.println("dempano: no resident process (" + e.getMessage() + "): rendering in this process");

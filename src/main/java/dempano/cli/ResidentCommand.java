@@ -34,8 +34,7 @@ final class ResidentCommand implements Callable<Integer> {
         try {
             dir = ResidentClient.directory(env);
         } catch (IOException e) { // it said the bare path ("dempano: /tmp/afile")
-            String file = e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null ? fs.getFile() + ": " : "";
-            throw new IOException("the resident processes' folder cannot be used: " + file + dempano.io.IoMessages.reason(e), e);
+            throw new IOException("the resident processes' folder cannot be used: " + dempano.io.IoMessages.describe(e), e);
         }
         List<Path> sockets;
         try (var files = java.nio.file.Files.list(dir)) {

@@ -573,6 +573,11 @@ public final class GeoTiffReader {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 
+    /** The GDAL_METADATA items and the attributes read from them ({@link #scaleOffset}). */
+    private static final java.util.regex.Pattern GDAL_ITEM = java.util.regex.Pattern.compile("<Item\\s([^>]*)>([^<]*)</Item>"),
+            GDAL_ROLE = java.util.regex.Pattern.compile("role\\s*=\\s*\"(scale|offset)\"", java.util.regex.Pattern.CASE_INSENSITIVE),
+            GDAL_SAMPLE = java.util.regex.Pattern.compile("sample\\s*=\\s*\"(\\d+)\"");
+
     /**
      * The band's scale and offset from the GDAL_METADATA tag ({@code <Item name="SCALE" role="scale">}, {@code
      * role="offset"}, of band 0 or of no band): height = stored value × scale + offset. {1, 0} when absent. A file in
@@ -585,12 +590,11 @@ public final class GeoTiffReader {
         if (xml == null || xml.isBlank()) {
             return out;
         }
-        java.util.regex.Matcher m = java.util.regex.Pattern.compile("<Item\\s([^>]*)>([^<]*)</Item>").matcher(xml);
+        java.util.regex.Matcher m = GDAL_ITEM.matcher(xml);
         while (m.find()) {
             String attributes = m.group(1);
-            java.util.regex.Matcher role = java.util.regex.Pattern.compile("role\\s*=\\s*\"(scale|offset)\"",
-                    java.util.regex.Pattern.CASE_INSENSITIVE).matcher(attributes);
-            java.util.regex.Matcher sample = java.util.regex.Pattern.compile("sample\\s*=\\s*\"(\\d+)\"").matcher(attributes);
+            java.util.regex.Matcher role = GDAL_ROLE.matcher(attributes);
+            java.util.regex.Matcher sample = GDAL_SAMPLE.matcher(attributes);
             if (!role.find() || (sample.find() && !sample.group(1).equals("0"))) {
                 continue;
             }

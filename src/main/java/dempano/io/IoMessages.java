@@ -13,6 +13,14 @@ public final class IoMessages {
     private IoMessages() {
     }
 
+    /**
+     * An I/O failure for a message that does not name the file: the file the failure names and the {@link #reason}
+     * ("…/afile: something of that name is in the way"); otherwise the exception's message (a bare path, for some).
+     */
+    public static String describe(IOException e) {
+        return e instanceof FileSystemException fs && fs.getFile() != null ? fs.getFile() + ": " + reason(e) : e.getMessage();
+    }
+
     /** Why an I/O operation failed, without the path (the caller names the final file). */
     public static String reason(IOException e) {
         if (e instanceof NoSuchFileException) {

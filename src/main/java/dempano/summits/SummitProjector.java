@@ -265,10 +265,13 @@ public final class SummitProjector {
         List<String> out = new ArrayList<>(list.warnings());
         double[] eyeFoot = new double[3], foot = new double[3];
         Ellipsoid.toEcef(render.latDeg(), render.lonDeg(), 0, eyeFoot);
-        List<Summit> unplaced = list.summits().stream().filter(s -> {
+        List<Summit> unplaced = new ArrayList<>();
+        for (Summit s : list.summits()) {
             Ellipsoid.toEcef(s.latDeg(), s.lonDeg(), 0, foot);
-            return Double.isNaN(s.elevationMetres()) && inRange(foot, eyeFoot, render);
-        }).toList();
+            if (Double.isNaN(s.elevationMetres()) && inRange(foot, eyeFoot, render)) {
+                unplaced.add(s);
+            }
+        }
         if (!unplaced.isEmpty()) {
             out.add(unplaced.size() + " of them within range " + (unplaced.size() == 1 ? "has" : "have")
                     + " no DEM height either and " + (unplaced.size() == 1 ? "is" : "are") + " left out (e.g. "

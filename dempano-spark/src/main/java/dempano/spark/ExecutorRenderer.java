@@ -112,7 +112,7 @@ final class ExecutorRenderer {
      * copy; a copy that fails leaves nothing behind.
      */
     static Path localDem(String dir, JobSettings s) {
-        if (!dir.matches("[A-Za-z][A-Za-z0-9+.-]*:.*")) {
+        if (!Hadoop.isUri(dir)) {
             return Path.of(dir); // a plain path: '%' or '[' in it are characters, not URI syntax
         }
         if (dir.regionMatches(true, 0, "file:", 0, 5)) {

@@ -18,6 +18,11 @@ final class Hadoop {
         return out;
     }
 
+    /** Whether a path option or cell is a Hadoop URI ({@code hdfs://…}, {@code s3a://…}, {@code file:/…}), not a plain path. */
+    static boolean isUri(String pathOrUri) {
+        return pathOrUri.strip().matches("[A-Za-z][A-Za-z0-9+.-]*:/.*");
+    }
+
     /** A configuration on an executor with the driver's settings on top of the node's defaults. */
     static Configuration configuration(Map<String, String> settings) {
         Configuration c = new Configuration();

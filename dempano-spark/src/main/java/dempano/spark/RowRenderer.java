@@ -127,11 +127,10 @@ final class RowRenderer {
      */
     String fromTableFolder(String image) {
         String cell = image.strip();
-        if (settings.tableDir == null || cell.isEmpty() || cell.matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")
-                || Path.of(cell).isAbsolute()) {
+        if (settings.tableDir == null || cell.isEmpty() || Hadoop.isUri(cell) || Path.of(cell).isAbsolute()) {
             return image;
         }
-        return settings.tableDir.matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")
+        return Hadoop.isUri(settings.tableDir)
                 ? new org.apache.hadoop.fs.Path(new org.apache.hadoop.fs.Path(settings.tableDir), cell).toString()
                 : Path.of(settings.tableDir).resolve(cell).toString();
     }
@@ -141,7 +140,7 @@ final class RowRenderer {
      * copied into the row's local folder first; other rows as they are (a plain path is a local file of the node).
      */
     private BatchRow localImage(BatchRow row, String imageCell, Path tmp) throws IOException {
-        if (row.photo() == null || imageCell == null || !imageCell.strip().matches("[A-Za-z][A-Za-z0-9+.-]*:/.*")) {
+        if (row.photo() == null || imageCell == null || !Hadoop.isUri(imageCell)) {
             return row;
         }
         org.apache.hadoop.fs.Path remote = new org.apache.hadoop.fs.Path(imageCell.strip());

@@ -127,17 +127,9 @@ public final class SparkBatch {
                 }
                 // As dempano batch reads its file: a byte-order mark skipped before parsing (a quoted first header cell
                 // after one was read as a literal '"id"'), bytes that are no UTF-8 spoil their rows, not the table.
-                boolean malformed = false;
-                try {
-                    java.nio.charset.StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes));
-                } catch (java.nio.charset.CharacterCodingException e) {
-                    malformed = true;
-                }
-                String text = new String(bytes, java.nio.charset.StandardCharsets.UTF_8);
-                if (text.startsWith("\uFEFF")) {
-                    text = text.substring(1);
-                }
-                try (CSVParser parser = CSVParser.parse(text, csv)) {
+                ViewpointCsv.Decoded decoded = ViewpointCsv.decode(bytes);
+                boolean malformed = decoded.malformed();
+                try (CSVParser parser = CSVParser.parse(decoded.text(), csv)) {
                     for (CSVRecord rec : parser) {
                         List<String> cells = rec.toList();
                         if (cells.stream().allMatch(String::isEmpty)) {
@@ -166,7 +158,7 @@ public final class SparkBatch {
                             values[i] = i < cells.size() && !cells.get(i).isEmpty() ? cells.get(i) : null;
                         }
                         if (notUtf8) {
-                            values[header.size()] = "not UTF-8 text (bytes no UTF-8 character is made of; save the file as UTF-8)";
+                            values[header.size()] = ViewpointCsv.NOT_UTF8;
                         } else if (cells.size() != header.size()) {
                             values[header.size()] = cells.size() + " fields, the header has " + header.size();
                         }
