@@ -136,17 +136,7 @@ class StartScriptTest {
     @Test
     void withoutTheArchiveTheScriptRunsSilentlyOnTheJvmsOwnArchive(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         Path home = dir.resolve("dempano");
-        Path installed = SCRIPT.getParent().getParent();
-        try (var files = Files.walk(installed)) {
-            for (Path f : (Iterable<Path>) files::iterator) {
-                Path to = home.resolve(installed.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(to);
-                } else if (!f.getFileName().toString().equals("dempano.jsa")) {
-                    Files.copy(f, to, java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
-                }
-            }
-        }
+        copyInstallation(home, false);
         ProcessBuilder pb = new ProcessBuilder(home.resolve("bin/dempano").toString(), "--version");
         pb.environment().remove("JAVA_OPTS");
         pb.environment().put("DEMPANO_OPTS", "-Xlog:class+load");
@@ -160,6 +150,42 @@ class StartScriptTest {
         assertTrue(out.contains("dempano 0.1.0"), out);
         assertTrue(out.contains("dempano.cli.Main source: file:"), out);
         assertTrue(out.contains("java.lang.Object " + SHARED), "a missing archive named to the JVM would switch its own off");
+    }
+
+    /**
+     * An installation whose path holds the shell's special characters runs: Gradle 4.x's template passed the class
+     * path's value through eval, which expanded a {@code $}, {@code `} or {@code "} in it again (the JVM found no
+     * class). Spaces worked before.
+     */
+    @Test
+    void anInstallationPathWithTheShellsSpecialCharactersRuns(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path home = dir.resolve("odd $HOME \"q\" `false` 'a' \\b").resolve("dempano");
+        copyInstallation(home, true);
+        ProcessBuilder pb = new ProcessBuilder(home.resolve("bin/dempano").toString(), "--version");
+        pb.environment().remove("JAVA_OPTS");
+        Path err = dir.resolve("err.txt");
+        pb.redirectError(err.toFile());
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals("", Files.readString(err));
+        assertEquals(0, p.exitValue());
+        assertTrue(out.contains("dempano 0.1.0"), out);
+    }
+
+    /** Copies the installation (times kept) to {@code home}, with or without the class-data archive. */
+    static void copyInstallation(Path home, boolean withArchive) throws IOException {
+        Path installed = SCRIPT.getParent().getParent();
+        try (var files = Files.walk(installed)) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                Path to = home.resolve(installed.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(to);
+                } else if (withArchive || !f.getFileName().toString().equals("dempano.jsa")) {
+                    Files.copy(f, to, java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            }
+        }
     }
 
     static long maxHeap(String flags) throws IOException {
