@@ -39,7 +39,8 @@ public final class FlyCommand implements Callable<Integer> {
     Path screenshot;
     @Option(names = "--panorama-at-end", description = "Scripted: also render the 360° panorama (key P) at the end and wait for it.")
     boolean panoramaAtEnd;
-    @Option(names = "--no-dialog", description = "Skip jME's settings dialog (resolution, full screen).")
+    /** Accepted for old scripts: there is no settings dialog (the flags set the window). */
+    @Option(names = "--no-dialog", hidden = true)
     boolean noDialog;
     @Option(names = "--wireframe", description = "Start in wireframe.")
     boolean wireframe;
@@ -66,10 +67,25 @@ public final class FlyCommand implements Callable<Integer> {
         if (frames < 0 || (frames > 0 && screenshot == null)) {
             throw new IllegalArgumentException("--frames needs --screenshot FILE (and a count ≥ 1)");
         }
-        if (!(rangeKm > 0 && rangeKm <= 300) || !(exaggeration >= 0.1 && exaggeration <= 100) || !(speed > 0)
-                || width < 64 || height < 64) {
-            throw new IllegalArgumentException("range must be in (0, 300] km, exaggeration in [0.1, 100], speed > 0, "
-                    + "window at least 64×64");
+        check(rangeKm > 0 && rangeKm <= 300, "--range-km", "in (0, 300]", rangeKm);
+        check(exaggeration >= 0.1 && exaggeration <= 100, "--exaggeration", "in [0.1, 100]", exaggeration);
+        check(speed > 0 && speed <= 100_000, "--speed-mps", "in (0, 100000]", speed);
+        check(Double.isFinite(headingDeg), "--heading-deg", "a finite number of degrees", headingDeg);
+        // Straight up or down leaves the view's roll undefined.
+        check(pitchDeg >= -89 && pitchDeg <= 89, "--pitch-deg", "in [-89, 89]", pitchDeg);
+        check(width >= 64 && width <= 16384, "--width", "in [64, 16384] pixels", width);
+        check(height >= 64 && height <= 16384, "--height", "in [64, 16384] pixels", height);
+        if (screenshot != null) {
+            String name = screenshot.getFileName() == null ? "" : screenshot.getFileName().toString();
+            if (!name.toLowerCase(java.util.Locale.ROOT).endsWith(".png") || name.length() == 4) {
+                throw new IllegalArgumentException("--screenshot must name a .png file, got '" + screenshot + "'");
+            }
+            if (java.nio.file.Files.isDirectory(screenshot)) {
+                throw new IllegalArgumentException("--screenshot " + screenshot + " is a folder; name a .png file in it");
+            }
+        }
+        if (java.nio.file.Files.exists(outDir) && !java.nio.file.Files.isDirectory(outDir)) {
+            throw new IllegalArgumentException("--out-dir " + outDir + " is a file, not a folder");
         }
         new Refraction(refraction); // validates
         if (!demo) { // the arguments before the display, as every other command has them
@@ -84,7 +100,13 @@ public final class FlyCommand implements Callable<Integer> {
         java.util.List<Path> dirs = demo ? java.util.List.of(DemoTerrain.ensure(DemoTerrain.DEFAULT_DIR)) : demDirs;
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         return OnscreenRenderer.fly(new OnscreenRenderer.Options(dirs, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
-                pitchDeg, speed, frames, screenshot, !noDialog, wireframe, debugColours, exaggeration, refraction, width, height,
+                pitchDeg, speed, frames, screenshot, wireframe, debugColours, exaggeration, refraction, width, height,
                 outDir, panoramaAtEnd));
+    }
+
+    private static void check(boolean ok, String flag, String range, Object value) {
+        if (!ok) {
+            throw new IllegalArgumentException(flag + " must be " + range + ", got " + value);
+        }
     }
 }

@@ -196,10 +196,12 @@ public final class Main implements Callable<Integer> {
         // dump (two identical lambda-proxy entries in the class list; SIGSEGV in adjust_lambda_proxy_class_dictionary).
         CommandLine.ITypeConverter<Double> decimal = Main::decimal;
         cl.registerConverter(Double.class, decimal).registerConverter(double.class, decimal);
+        // "--out fly" is a file named fly, not the fly command (a subcommand's name is taken as an option's value).
+        cl.setAllowSubcommandsAsOptionParameters(true);
         cl.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("dempano: " + ex.getMessage());
-            err.println("Try 'dempano --help' for the options.");
+            err.println("Try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help' for the options.");
             return 2;
         });
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {

@@ -21,8 +21,9 @@ import picocli.CommandLine.Parameters;
  * ({@code --width-px --height-px} and a lens) for synthetic use.
  */
 @Command(name = "photo", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Render a photograph's own view: P.png, P-distance.npy (float32, metres, sky +inf), P.json,",
-            "P-overlay.png (the photo with rendered silhouettes and summits) and, with --summits, P-summits.json/csv.",
+        description = {"Render a photograph's own view, its distances and summits; estimate its pose where EXIF and flags leave it open.",
+            "Writes P.png, P-distance.npy (float32, metres, sky +inf), P.json, P-overlay.png (the photo with rendered",
+            "silhouettes and summits) and, with --summits, P-summits.json/csv.",
             "Pose and lens come from the photo's EXIF/XMP; flags override. Without IMAGE, give --width-px, --height-px,",
             "--lat, --lon, --heading-deg and a lens (--hfov-deg, --focal35-mm or --focal-mm with --sensor-width-mm)."})
 public final class PhotoCommand implements Callable<Integer> {

@@ -26,7 +26,7 @@ import picocli.CommandLine.Option;
 public class RenderOptions implements Serializable {
     private static final long serialVersionUID = 1L;
 
-    @Option(names = "--range-km", description = "Range of sight, km (default: 100; demo scene: 60).")
+    @Option(names = "--range-km", description = "Range of sight, km (default: 100; 60 for the panorama command's built-in demo scene).")
     public Double rangeKm;
     @Option(names = "--refraction", paramLabel = "K", description = "Refraction coefficient k: apparent lift k·d²/2R; 0 = off (default: ${DEFAULT-VALUE}).", defaultValue = "0.13")
     public double refraction = Refraction.STANDARD.coefficient();

@@ -130,7 +130,7 @@ public final class SummitWriter {
                 + " demHeightMetres: the DEM's height at the summit's position (null: not looked up);"
                 + " inFilledVoid: the DEM had a void there, its height is interpolated");
         root.add("summits", a);
-        return new GsonBuilder().setPrettyPrinting().create().toJson(root) + "\n";
+        return new GsonBuilder().setPrettyPrinting().serializeNulls().create().toJson(root) + "\n";
     }
 
     private static void number(JsonObject o, String key, double v) {

@@ -23,6 +23,9 @@ import dempano.dem.Mosaic;
 import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
+import dempano.io.AtomicFiles;
+import dempano.io.IoMessages;
+import dempano.io.Png;
 import dempano.terrain.TerrainBuilder;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -33,7 +36,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicReference;
-import javax.imageio.ImageIO;
 
 /**
  * The fly-through: a jME window over the same terrain, earth model and shader as the panoramas, to
@@ -63,8 +65,24 @@ public final class OnscreenRenderer extends SimpleApplication {
      */
     public record Options(List<Path> demDirs, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
                           double headingDeg, double pitchDeg, double speedMetresPerSecond, int frames, Path screenshot,
-                          boolean showSettings, boolean wireframe, boolean debugAids, double exaggeration,
+                          boolean wireframe, boolean debugAids, double exaggeration,
                           double refractionCoefficient, int widthPx, int heightPx, Path outDir, boolean panoramaAtEnd) {
+    }
+
+    /** The terrain's data, read before the window opens (a wrong folder is said before anything appears). */
+    private record Ground(Mosaic mosaic, Viewpoint start) {
+        /**
+         * Opens the DEM as the panorama command does: the folders' warnings and the mosaic's (missing tiles drawn as
+         * sea level, voids filled) said on stderr; no tile at all, or none under the start, is an error.
+         */
+        static Ground load(Options opt) {
+            dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(opt.demDirs(), dempano.dem.DemFill.DEFAULT,
+                    w -> System.err.println("  warning: " + w));
+            Mosaic mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.AUTO);
+            MissingTilePolicy.AUTO.checkData(mosaic, opt.latDeg(), opt.lonDeg(), Double.NaN);
+            mosaic.warnings().forEach(w -> System.err.println("  warning: " + w));
+            return new Ground(mosaic, Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres()));
+        }
     }
 
     private final Options opt;
@@ -81,12 +99,21 @@ public final class OnscreenRenderer extends SimpleApplication {
     private int scriptedFrame;
     private volatile String status = "";
     private final ScreenGrabber grabber = new ScreenGrabber();
-    private int shots, panoramas;
+    private int panoramas;
+    /** Panoramas rendering in their own JVMs: waited for when the window closes, stopped when fly is killed. */
+    private final java.util.Set<Process> running = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private volatile Thread panoramaThread;
+    /** Scripted mode: the panorama at the end failed. */
+    private volatile boolean panoramaFailed;
 
-    public OnscreenRenderer(Options opt) {
-        super();
+    private OnscreenRenderer(Options opt, Ground ground) {
+        // The fly camera alone of SimpleApplication's default states: no statistics, and no C/M keys printing jME's
+        // camera and memory dumps to stdout.
+        super(new com.jme3.app.FlyCamAppState());
         this.opt = opt;
+        this.mosaic = ground.mosaic();
+        this.start = ground.start();
+        this.frame = start.eyeFrame();
         this.wireframe = opt.wireframe();
         this.debugAids = opt.debugAids();
         this.exaggeration = opt.exaggeration();
@@ -108,12 +135,19 @@ public final class OnscreenRenderer extends SimpleApplication {
         }
     }
 
-    /** Runs the window until it is closed (or the script ends); returns 0, or throws what went wrong. */
-    public static int fly(Options opt) {
+    /**
+     * Runs the window until it is closed (or the script ends), then waits for panoramas still rendering (key P);
+     * returns 0, or 1 where the script's panorama failed; throws what went wrong (a scripted screenshot not
+     * written: the {@link IOException}). A fly process that is killed stops the panoramas it started.
+     */
+    public static int fly(Options opt) throws IOException {
         checkDisplay();
+        Ground ground = Ground.load(opt);
         GlPlatform.quietJme();
         GlPlatform.configureWindow();
-        OnscreenRenderer app = new OnscreenRenderer(opt);
+        OnscreenRenderer app = new OnscreenRenderer(opt, ground);
+        Thread stopPanoramas = new Thread(app::stopPanoramas, "fly-exit");
+        Runtime.getRuntime().addShutdownHook(stopPanoramas);
         AppSettings s = new AppSettings(true);
         s.setTitle("dempano fly-through");
         s.setResolution(opt.widthPx(), opt.heightPx());
@@ -123,7 +157,7 @@ public final class OnscreenRenderer extends SimpleApplication {
         s.setSamples(0);
         s.setGammaCorrection(false);
         app.setSettings(s);
-        app.setShowSettings(opt.showSettings() && opt.frames() == 0);
+        app.setShowSettings(false); // jME's settings dialog is not installed (jme3-awt-dialogs): the flags set it all
         app.setPauseOnLostFocus(false);
         app.start(); // jME's LWJGL 3 context runs its loop on its own thread
         try {
@@ -132,16 +166,63 @@ public final class OnscreenRenderer extends SimpleApplication {
             Thread.currentThread().interrupt();
             app.stop();
         }
+        app.awaitPanoramas();
+        try {
+            Runtime.getRuntime().removeShutdownHook(stopPanoramas);
+        } catch (IllegalStateException e) {
+            // the JVM is ending: the hook runs
+        }
         Throwable t = app.failure.get();
         if (t instanceof RuntimeException e && !(t instanceof JmeFailure)) {
-            throw e; // from our own start-up (the DEM): already worded for the user
+            throw e; // already worded for the user
+        }
+        if (t instanceof IOException e) {
+            throw e; // the scripted screenshot: names the file and why
         }
         if (t != null) {
             throw new GlUnavailableException(app.windowOpened
                     ? "the fly-through stopped: " + t.getMessage()
                     : "fly could not open its window: " + t.getMessage() + "; " + GlPlatform.windowHint(), t.getCause());
         }
-        return 0;
+        return app.panoramaFailed ? 1 : 0;
+    }
+
+    /** After the window closed: waits for the panoramas key P started, saying so. */
+    private void awaitPanoramas() {
+        for (Process p : List.copyOf(running)) {
+            System.err.println("dempano fly: waiting for the panorama in progress to be written (Ctrl-C stops it)");
+            try {
+                p.waitFor();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+        Thread th = panoramaThread;
+        if (th != null) {
+            try {
+                th.join(10_000); // its last line (written or failed)
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** fly is being killed (SIGTERM, Ctrl-C): its panoramas end too, each leaving no part of its files (their own exit). */
+    private void stopPanoramas() {
+        for (Process p : List.copyOf(running)) {
+            p.destroy();
+            try {
+                if (p.waitFor(20, java.util.concurrent.TimeUnit.SECONDS)) {
+                    System.err.println("dempano fly: the panorama in progress was stopped");
+                } else {
+                    p.destroyForcibly();
+                }
+            } catch (InterruptedException e) {
+                p.destroyForcibly();
+                return;
+            }
+        }
     }
 
     /** A failure jME reported through {@link #handleError}; its message is jME's or GLFW's words, once. */
@@ -177,22 +258,11 @@ public final class OnscreenRenderer extends SimpleApplication {
     @Override
     public void simpleInitApp() {
         windowOpened = true;
-        try {
-            // Opened as the command line opens them: the default fill, the folders' warnings said.
-            dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(opt.demDirs(), dempano.dem.DemFill.DEFAULT,
-                    w -> System.err.println("  warning: " + w));
-            mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.SEA_LEVEL);
-            start = Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres());
-            frame = start.eyeFrame();
-        } catch (RuntimeException e) {
-            failure.set(e);
-            stop();
-            return;
-        }
         viewPort.setBackgroundColor(new ColorRGBA(OffscreenRenderer.SKY_RGBA[0], OffscreenRenderer.SKY_RGBA[1],
                 OffscreenRenderer.SKY_RGBA[2], 1));
         cam.setFrustumPerspective(60, (float) settings.getWidth() / settings.getHeight(), 1f, (float) (opt.rangeMetres() * 1.5));
-        cam.setLocation(Vector3f.ZERO);
+        // The start frame's origin is the eye over the true ground; the terrain is drawn exaggerated.
+        cam.setLocation(new Vector3f(0, (float) (start.groundElevationMetres() * (exaggeration - 1)), 0));
         float heading = (float) Math.toRadians(opt.headingDeg()), pitch = (float) Math.toRadians(opt.pitchDeg());
         Vector3f dir = new Vector3f(FastMath.sin(heading) * FastMath.cos(pitch), FastMath.sin(pitch),
                 -FastMath.cos(heading) * FastMath.cos(pitch));
@@ -264,7 +334,15 @@ public final class OnscreenRenderer extends SimpleApplication {
                     material.setBoolean("DebugAids", debugAids);
                 }
                 case "exaggerate" -> {
+                    double was = exaggeration;
                     exaggeration = exaggeration >= 4 ? 1 : exaggeration * 2;
+                    // Keep the camera as high above the ground under it as it was: the heights drawn scale.
+                    Vector3f p = cam.getLocation();
+                    double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
+                    double ground = groundUnder(geo[0], geo[1]);
+                    if (!Double.isNaN(ground)) {
+                        cam.setLocation(p.add(0, (float) (ground * (exaggeration - was)), 0));
+                    }
                     buildTerrain();
                 }
                 case "earth" -> {
@@ -275,12 +353,29 @@ public final class OnscreenRenderer extends SimpleApplication {
                 case "faster" -> flyCam.setMoveSpeed(flyCam.getMoveSpeed() * 2);
                 case "slower" -> flyCam.setMoveSpeed(Math.max(1, flyCam.getMoveSpeed() / 2));
                 case "panorama" -> renderPanorama();
-                case "screenshot" -> grabber.request(opt.outDir().resolve("fly-" + (++shots) + ".png"));
+                case "screenshot" -> grabber.request(opt.outDir().resolve(freeName("fly-", ".png") + ".png"));
                 default -> {
                 }
             }
         };
         inputManager.addListener(l, "wireframe", "debug", "exaggerate", "earth", "faster", "slower", "panorama", "screenshot");
+    }
+
+    /**
+     * The first {@code prefix + n} (n = 1, 2, …) that no file in the output folder starts with followed by one of the
+     * suffixes: a second session into the same folder does not overwrite the first one's screenshots or panoramas.
+     */
+    private String freeName(String prefix, String... suffixes) {
+        for (int n = 1; ; n++) {
+            String name = prefix + n;
+            boolean taken = false;
+            for (String suffix : suffixes) {
+                taken |= Files.exists(opt.outDir().resolve(name + suffix));
+            }
+            if (!taken) {
+                return name;
+            }
+        }
     }
 
     @Override
@@ -304,20 +399,30 @@ public final class OnscreenRenderer extends SimpleApplication {
         Vector3f p = cam.getLocation(), d = cam.getDirection();
         double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
         double ground = groundUnder(geo[0], geo[1]);
+        double aboveGround = aboveGround(p, geo);
         double heading = (Math.toDegrees(Math.atan2(d.x, -d.z)) + 360) % 360, pitch = Math.toDegrees(Math.asin(d.y));
         double[] hit = crosshair(p, d);
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "lat %.5f  lon %.5f%n", geo[0], geo[1]));
-        sb.append(String.format(Locale.ROOT, "altitude %.0f m above sea, %.0f m above ground%n", geo[2], geo[2] - ground));
+        // Above sea: the eye as high above the true ground as the camera is above the ground drawn (exaggerated,
+        // lifted by refraction away from the start): where key P renders its panorama.
+        sb.append(String.format(Locale.ROOT, "altitude %.0f m above sea, %.0f m above ground%n", ground + aboveGround,
+                aboveGround));
         sb.append(String.format(Locale.ROOT, "heading %.1f deg  pitch %.1f deg  speed %.0f m/s%n", heading, pitch,
                 opt.frames() > 0 ? opt.speedMetresPerSecond() : flyCam.getMoveSpeed()));
         sb.append(hit == null ? "crosshair: sky / beyond range\n" : String.format(Locale.ROOT,
                 "crosshair: DEM %.0f m at %.5f, %.5f, %.2f km away%n", hit[2], hit[0], hit[1], hit[3] / 1000));
-        sb.append(String.format(Locale.ROOT, "exaggeration x%.0f, %s, wireframe %s, debug colours %s",
-                exaggeration, refractionK == 1 ? "flat earth (k = 1)" : "refraction k = " + refractionK,
+        sb.append(String.format(Locale.ROOT, "exaggeration x%s, %s, wireframe %s, debug colours %s",
+                java.math.BigDecimal.valueOf(exaggeration).stripTrailingZeros().toPlainString(), refractionK == 1 ? "flat earth (k = 1)" : "refraction k = " + refractionK,
                 wireframe ? "on" : "off", debugAids ? "on" : "off"));
         hud.setText(sb.toString());
         message.setText(status);
+    }
+
+    /** The camera's height above the ground drawn under it (exaggerated, lifted by refraction), metres; NaN off the DEM. */
+    private double aboveGround(Vector3f p, double[] geo) {
+        double ground = groundUnder(geo[0], geo[1]);
+        return geo[2] - (ground * exaggeration + new Refraction(refractionK).liftMetres(Math.hypot(p.x, p.z)));
     }
 
     /** DEM height (m) at a coordinate, NaN outside the mosaic. */
@@ -369,30 +474,52 @@ public final class OnscreenRenderer extends SimpleApplication {
     private void renderPanorama() {
         Vector3f p = cam.getLocation();
         double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
-        Path prefix = opt.outDir().resolve("fly-panorama-" + (++panoramas));
-        double ground = groundUnder(geo[0], geo[1]);
-        if (Double.isNaN(ground) || geo[2] < ground) {
+        double ground = groundUnder(geo[0], geo[1]), above = aboveGround(p, geo);
+        if (Double.isNaN(ground) || above < 0) {
             status = "panorama: the camera is " + (Double.isNaN(ground) ? "off the DEM" : "below the terrain");
+            System.err.println("dempano fly: " + status);
+            panoramaFailed |= opt.frames() > 0;
             return;
         }
+        try {
+            Files.createDirectories(opt.outDir());
+        } catch (IOException e) {
+            status = "panorama not started: cannot make " + opt.outDir() + ": " + IoMessages.reason(e);
+            System.err.println("dempano fly: " + status);
+            panoramaFailed |= opt.frames() > 0;
+            return;
+        }
+        String name = freeName("fly-panorama-", ".png", ".json", "-distance.npy", ".log");
+        Path prefix = opt.outDir().resolve(name), log = opt.outDir().resolve(name + ".log");
+        panoramas++;
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx4g",
-                "-cp", System.getProperty("java.class.path"), "dempano.cli.Main",
-                "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(geo[2]),
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), "dempano.cli.Main",
+                "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(ground + above),
                 "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString()));
         opt.demDirs().forEach(d -> cmd.addAll(List.of("--dem-dir", d.toString())));
         status = "panorama: rendering at " + String.format(Locale.ROOT, "%.5f, %.5f, %.0f m", geo[0], geo[1], geo[2]) + " …";
+        Process proc;
+        try {
+            proc = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        } catch (IOException e) {
+            status = "panorama not started: " + IoMessages.describe(e);
+            System.err.println("dempano fly: " + status);
+            panoramaFailed |= opt.frames() > 0;
+            return;
+        }
+        running.add(proc);
         Thread th = new Thread(() -> {
             try {
-                Files.createDirectories(opt.outDir());
-                Process proc = new ProcessBuilder(cmd).redirectErrorStream(true)
-                        .redirectOutput(opt.outDir().resolve("fly-panorama-" + panoramas + ".log").toFile()).start();
                 int rc = proc.waitFor();
                 status = rc == 0 ? "panorama written: " + prefix + ".png, " + prefix + "-distance.npy"
-                        : "panorama failed (exit " + rc + "): see " + opt.outDir().resolve("fly-panorama-" + panoramas + ".log");
-            } catch (IOException | InterruptedException e) {
-                status = "panorama failed: " + e;
+                        : "panorama failed (exit " + rc + "): see " + log;
+                panoramaFailed |= rc != 0 && opt.frames() > 0;
+                System.err.println("dempano fly: " + status);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } finally {
+                running.remove(proc);
             }
-            System.err.println("dempano fly: " + status);
         }, "panorama");
         th.setDaemon(true);
         th.start();
@@ -455,15 +582,23 @@ public final class OnscreenRenderer extends SimpleApplication {
             try {
                 Path parent = file.toAbsolutePath().getParent();
                 if (parent != null) {
-                    Files.createDirectories(parent);
+                    try {
+                        Files.createDirectories(parent);
+                    } catch (IOException e) {
+                        throw new IOException("cannot write " + file + ": cannot make its folder " + parent + ": "
+                                + IoMessages.reason(e), e);
+                    }
                 }
-                ImageIO.write(img, "png", file.toFile());
+                AtomicFiles.write(file, stream -> Png.write(img, stream));
                 status = "screenshot written: " + file;
                 System.err.println("dempano fly: " + status);
                 System.out.println("dempano fly HUD: " + hud.getText().replace('\n', '|'));
             } catch (IOException e) {
-                failure.compareAndSet(null, e);
-                status = "screenshot failed: " + e;
+                status = "screenshot not written: " + e.getMessage();
+                System.err.println("dempano fly: " + status);
+                if (opt.frames() > 0) {
+                    failure.compareAndSet(null, e); // the script's one output: the run fails
+                }
             }
             target = null;
         }

@@ -43,10 +43,22 @@ class SummitDemColumnsTest {
         assertEquals(3601.5, first.get("demHeightMetres").getAsDouble());
         assertTrue(first.get("inFilledVoid").getAsBoolean());
         JsonObject second = root.getAsJsonArray("summits").get(1).getAsJsonObject();
-        // Not looked up: left out (as the writer leaves out every value JSON cannot hold).
-        assertTrue(second.get("demHeightMetres") == null || second.get("demHeightMetres").isJsonNull());
+        // Not looked up: null, as the file's note says (a member left out read as a missing column).
+        assertTrue(second.has("demHeightMetres") && second.get("demHeightMetres").isJsonNull(), second.toString());
         assertEquals(false, second.get("inFilledVoid").getAsBoolean());
         assertFalse(second.get("elevationFromDem").getAsBoolean());
         assertTrue(root.getAsJsonArray("summits").get(2).getAsJsonObject().get("elevationFromDem").getAsBoolean());
+    }
+
+    /** A summit whose pixel shows sky (its tip on the skyline) has a null map distance, not a missing one. */
+    @Test
+    void valuesJsonCannotHoldAreNull() {
+        SummitSighting tip = new SummitSighting(new Summit("Tip", 46.5, 8.1, 3000), 100, 2, 5, 6, 20000, 19990,
+                Double.POSITIVE_INFINITY, Double.NaN, false);
+        JsonObject o = JsonParser.parseString(SummitWriter.json(List.of(tip))).getAsJsonObject().getAsJsonArray("summits")
+                .get(0).getAsJsonObject();
+        for (String key : List.of("mapDistanceMetres", "seenDistanceMetres", "demHeightMetres")) {
+            assertTrue(o.has(key) && o.get(key).isJsonNull(), key + " in " + o);
+        }
     }
 }
