@@ -54,6 +54,10 @@ public final class FlyCommand implements Callable<Integer> {
     int width;
     @Option(names = "--height", description = "Window height, pixels (default: ${DEFAULT-VALUE}).", defaultValue = "720")
     int height;
+    @Option(names = "--missing-tiles", paramLabel = "auto|sea|error", description = "A needed tile that is absent, as for "
+            + "a panorama: auto (default: sea level with a warning; an error when no needed tile is present or the start's "
+            + "own is missing), sea or error.", defaultValue = "auto")
+    String missingTiles;
     @Option(names = "--out-dir", paramLabel = "DIR", description = "Where panoramas (P) and screenshots (K) go (default: ${DEFAULT-VALUE}).", defaultValue = "build/fly")
     Path outDir;
 
@@ -88,6 +92,7 @@ public final class FlyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--out-dir " + outDir + " is a file, not a folder");
         }
         new Refraction(refraction); // validates
+        dempano.dem.MissingTilePolicy missing = RenderOptions.missingTilePolicy(missingTiles);
         if (!demo) { // the arguments before the display, as every other command has them
             dempano.dem.TileSelection.checkCoordinates(latDeg, lonDeg);
             for (Path d : demDirs) {
@@ -101,7 +106,7 @@ public final class FlyCommand implements Callable<Integer> {
         double lat = demo ? DemoTerrain.viewpoint()[0] : latDeg, lon = demo ? DemoTerrain.viewpoint()[1] : lonDeg;
         return OnscreenRenderer.fly(new OnscreenRenderer.Options(dirs, lat, lon, aboveGroundMetres, rangeKm * 1000, headingDeg,
                 pitchDeg, speed, frames, screenshot, wireframe, debugColours, exaggeration, refraction, width, height,
-                outDir, panoramaAtEnd));
+                outDir, panoramaAtEnd, missing));
     }
 
     private static void check(boolean ok, String flag, String range, Object value) {

@@ -81,6 +81,11 @@ public class RenderOptions implements Serializable {
 
     /** The value of {@code --missing-tiles} (auto, sea, error). */
     public MissingTilePolicy missingTilePolicy() {
+        return missingTilePolicy(missingTiles);
+    }
+
+    /** A {@code --missing-tiles} value (auto, sea, error). */
+    static MissingTilePolicy missingTilePolicy(String missingTiles) {
         return switch (missingTiles.toLowerCase(Locale.ROOT)) {
             case "auto" -> MissingTilePolicy.AUTO;
             case "sea", "sea-level" -> MissingTilePolicy.SEA_LEVEL;

@@ -62,11 +62,13 @@ public final class OnscreenRenderer extends SimpleApplication {
      *                          write {@code screenshot} and quit; 0 = interactive
      * @param outDir            where panoramas and screenshots go
      * @param panoramaAtEnd     scripted mode: also press P at the end and wait for the panorama
+     * @param missingTiles      what an absent tile is (as for a panorama; key P's panorama takes it too)
      */
     public record Options(List<Path> demDirs, double latDeg, double lonDeg, double aboveGroundMetres, double rangeMetres,
                           double headingDeg, double pitchDeg, double speedMetresPerSecond, int frames, Path screenshot,
                           boolean wireframe, boolean debugAids, double exaggeration,
-                          double refractionCoefficient, int widthPx, int heightPx, Path outDir, boolean panoramaAtEnd) {
+                          double refractionCoefficient, int widthPx, int heightPx, Path outDir, boolean panoramaAtEnd,
+                          MissingTilePolicy missingTiles) {
     }
 
     /** The terrain's data, read before the window opens (a wrong folder is said before anything appears). */
@@ -78,8 +80,8 @@ public final class OnscreenRenderer extends SimpleApplication {
         static Ground load(Options opt) {
             dempano.dem.DemSource dem = dempano.dem.PriorityDem.open(opt.demDirs(), dempano.dem.DemFill.DEFAULT,
                     w -> System.err.println("  warning: " + w));
-            Mosaic mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), MissingTilePolicy.AUTO);
-            MissingTilePolicy.AUTO.checkData(mosaic, opt.latDeg(), opt.lonDeg(), Double.NaN);
+            Mosaic mosaic = Mosaic.around(dem, opt.latDeg(), opt.lonDeg(), opt.rangeMetres(), opt.missingTiles());
+            opt.missingTiles().checkData(mosaic, opt.latDeg(), opt.lonDeg(), Double.NaN);
             mosaic.warnings().forEach(w -> System.err.println("  warning: " + w));
             return new Ground(mosaic, Viewpoint.onDem(mosaic, opt.latDeg(), opt.lonDeg(), 0, opt.aboveGroundMetres()));
         }
@@ -495,7 +497,12 @@ public final class OnscreenRenderer extends SimpleApplication {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx4g",
                 "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), "dempano.cli.Main",
                 "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(ground + above),
-                "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString()));
+                "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString(),
+                "--missing-tiles", switch (opt.missingTiles()) {
+                    case AUTO -> "auto";
+                    case SEA_LEVEL -> "sea";
+                    case ERROR -> "error";
+                }));
         opt.demDirs().forEach(d -> cmd.addAll(List.of("--dem-dir", d.toString())));
         status = "panorama: rendering at " + String.format(Locale.ROOT, "%.5f, %.5f, %.0f m", geo[0], geo[1], geo[2]) + " …";
         Process proc;
@@ -595,9 +602,10 @@ public final class OnscreenRenderer extends SimpleApplication {
                 System.out.println("dempano fly HUD: " + hud.getText().replace('\n', '|'));
             } catch (IOException e) {
                 status = "screenshot not written: " + e.getMessage();
-                System.err.println("dempano fly: " + status);
                 if (opt.frames() > 0) {
-                    failure.compareAndSet(null, e); // the script's one output: the run fails
+                    failure.compareAndSet(null, e); // the script's one output: the run fails, saying why
+                } else {
+                    System.err.println("dempano fly: " + status);
                 }
             }
             target = null;
