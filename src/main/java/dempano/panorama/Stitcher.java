@@ -379,13 +379,21 @@ public final class Stitcher {
                 probedPixels++; // met on the surface between the central samples' own hits: no search needed
                 return r;
             }
-            if (probe != null
-                    && !Double.isNaN(r = probe.firstHitMetres(dx, dy, dz,
-                            Math.max(0.9 * hint.nearestCornerMetres, NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
-                            2 * hint.farthestCornerMetres + 500))
-                    && (r < Double.POSITIVE_INFINITY || hint.skyInCentre)) {
-                probedPixels++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
-                return r;
+            if (probe != null) {
+                double to = 2 * hint.farthestCornerMetres + 500;
+                r = probe.firstHitMetres(dx, dy, dz,
+                        Math.max(0.9 * hint.nearestCornerMetres, NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
+                        to);
+                if (Double.isNaN(r) && hint.skyInCentre) {
+                    // Above the terrain out to there, with sky beside it: a horizon's ray, which may meet the surface
+                    // far beyond the terrain the samples saw (a sea horizon 3 km off, seen beside samples of sea 800 m
+                    // off and of sky, was taken for sky): searched on, out to the range.
+                    r = probe.firstHitMetres(dx, dy, dz, to, Double.POSITIVE_INFINITY);
+                }
+                if (!Double.isNaN(r) && (r < Double.POSITIVE_INFINITY || hint.skyInCentre)) {
+                    probedPixels++; // (nothing met out to the range, with no sky seen beside it, is a crack: below)
+                    return r;
+                }
             }
             if (hint.skyInCentre) {
                 exactPixels++;

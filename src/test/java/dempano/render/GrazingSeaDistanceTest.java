@@ -127,7 +127,36 @@ class GrazingSeaDistanceTest {
         PanoramaRequest req = PanoramaRequest.at(LAT, LON).withAltitudeMetres(eyeMetres).withEyeHeightMetres(0)
                 .withRangeMetres(eyeMetres > 1000 ? 170_000 : 60_000).withRefraction(Refraction.NONE).withPixelsPerDegree(PPD)
                 .withElevationRange(new ElevationRange(-2, 0.5, false));
-        Panorama p = gl.render(req);
+        SeaStats st = seaStats(gl.render(req), eyeMetres);
+        assertTrue(st.measured > 5000, "sea pixels measured: " + st.measured);
+        assertTrue(st.worstBelow <= 1e-3, "worst sea pixel below the horizon row: " + st.worstBelow);
+        assertTrue(st.worstHorizon <= 1e-2, "worst pixel of the horizon row: " + st.worstHorizon);
+        assertTrue(st.skyMismatch == 0, "pixels sky in one and sea in the other: " + st.skyMismatch);
+    }
+
+    /**
+     * An elevation range hugging the horizon: the horizon row's sea, a few km off, is seen by no view sample (those
+     * around it see sea a few hundred metres off, and sky); its rays must still find it (they were all sky, the
+     * search stopping short of it and sky seen beside them).
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource({"2, -1, 0.1, 10", "2, -0.4, 0.1, 10", "1.5, -0.4, 0.1, 10", "4.6, -0.4, 0.1, 20"})
+    void theHorizonRowIsSeaWhereTheRaysMeetItWhateverTheElevationRange(double eyeMetres, double bottomDeg, double topDeg,
+                                                                        double ppd) {
+        PanoramaRequest req = PanoramaRequest.at(LAT, LON).withAltitudeMetres(eyeMetres).withEyeHeightMetres(0)
+                .withRangeMetres(30_000).withRefraction(Refraction.NONE).withPixelsPerDegree(ppd)
+                .withElevationRange(new ElevationRange(bottomDeg, topDeg, false));
+        SeaStats st = seaStats(gl.render(req), eyeMetres);
+        assertTrue(st.skyMismatch == 0, "pixels sky in one and sea in the other: " + st.skyMismatch);
+        assertTrue(st.worstHorizon <= 1e-2, "worst pixel of the horizon row: " + st.worstHorizon);
+        assertTrue(st.worstBelow <= 1e-3, "worst sea pixel below the horizon row: " + st.worstBelow);
+    }
+
+    /** Sea pixels against the closed form: below each column's first sea row, that row, and sky disagreements. */
+    record SeaStats(int measured, double worstBelow, double worstHorizon, int skyMismatch) {
+    }
+
+    static SeaStats seaStats(Panorama p, double eyeMetres) {
         LocalFrame eye = new LocalFrame(LAT, LON, eyeMetres);
         double worstBelow = 0, worstHorizon = 0;
         int measured = 0, skyMismatch = 0;
@@ -150,11 +179,9 @@ class GrazingSeaDistanceTest {
                 }
             }
         }
-        System.out.printf("eye %.0f m: %d sea px below the horizon row, worst %.2e; horizon row worst %.2e; sky mismatches %d%n",
-                eyeMetres, measured, worstBelow, worstHorizon, skyMismatch);
-        assertTrue(measured > 5000, "sea pixels measured: " + measured);
-        assertTrue(worstBelow <= 1e-3, "worst sea pixel below the horizon row: " + worstBelow);
-        assertTrue(worstHorizon <= 1e-2, "worst pixel of the horizon row: " + worstHorizon);
-        assertTrue(skyMismatch == 0, "pixels sky in one and sea in the other: " + skyMismatch);
+        System.out.printf("eye %.1f m, %d rows from %.2f° at %.0f px/°: %d sea px below the horizon row, worst %.2e; horizon"
+                + " row worst %.2e; sky mismatches %d%n", eyeMetres, p.heightPx(), p.elevationOfRow(0), p.geometry().pixelsPerDegree(),
+                measured, worstBelow, worstHorizon, skyMismatch);
+        return new SeaStats(measured, worstBelow, worstHorizon, skyMismatch);
     }
 }
