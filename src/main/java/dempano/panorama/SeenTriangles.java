@@ -56,6 +56,12 @@ public record SeenTriangles(double[] corners, boolean[] skirt, boolean[] simplif
         return corners.length / 9;
     }
 
+    /** Squared distance from the eye to a triangle's first corner, square metres. */
+    public double cornerDistanceSquared(int triangle) {
+        int o = triangle * 9;
+        return corners[o] * corners[o] + corners[o + 1] * corners[o + 1] + corners[o + 2] * corners[o + 2];
+    }
+
     /** Distance from the eye to a triangle's first corner, metres. */
     public double cornerDistanceMetres(int triangle) {
         int o = triangle * 9;

@@ -336,6 +336,24 @@ public final class Stitcher {
                         exactPixels++;
                     } else {
                         r = exactRange(seen, seen.triangleOfSample()[view], layout, p, ray, hint);
+                        double nearestSeen;
+                        if (r < Double.POSITIVE_INFINITY && probe != null
+                                && hint.nearestCandidateMetres * (1 + NEARER_SEEN_MARGIN) < r
+                                && (nearestSeen = nearestSeenMetres(inverseEyeDepth, view, layout, p)) * (1 + NEARER_SEEN_MARGIN) < r) {
+                            // Met, but beyond terrain seen around it: the ray may have passed under a crest between
+                            // the samples (none of whose triangles it meets) and come out beyond: the surface decides,
+                            // searched from just nearer than that terrain along the pixel's own ray.
+                            // (A crossing nearer than where the search starts means the ray was not above the surface
+                            // there, a few per cent nearer than the terrain seen: the probe's surface and the drawn one
+                            // part near a slope at the eye's feet; the triangles met decide then.)
+                            double from = NEAREST_SEEN_SHARE * nearestSeen;
+                            double nearer = probe.firstHitMetres(ray[0], ray[1], ray[2], from, r);
+                            if (nearer >= from && nearer < r) {
+                                probedPixels++;
+                                rangeOut[i] = (float) nearer;
+                                continue;
+                            }
+                        }
                         if (!Double.isNaN(r) && (r == Double.POSITIVE_INFINITY || !(hint.incidenceSine < GRAZING_SINE
                                 && hint.simplified && probe != null))) {
                             exactPixels++;
@@ -447,6 +465,13 @@ public final class Stitcher {
     static final double NEAREST_SEEN_SHARE = 0.97;
 
     /**
+     * A pixel whose ray met a triangle farther than this share beyond the nearest corner of the triangles seen around
+     * it is searched on the surface from there ({@link #NEAREST_SEEN_SHARE} of it) to the triangle met: its ray
+     * may pass under a crest between the view samples and meet the triangle behind.
+     */
+    static final double NEARER_SEEN_MARGIN = 0.03;
+
+    /**
      * Distance along the ray of view point p = {px, py, xTan, yTan} at which it reaches the eye depth
      * of the nearest of the 4×4 view samples around it, metres (0 when none saw terrain).
      */
@@ -515,6 +540,11 @@ public final class Stitcher {
         boolean simplified;
         /** When a distance is returned: the sine of the incidence on the triangle met if simplified (only then asked), else 1. */
         double incidenceSine;
+        /**
+         * When a distance is returned: the nearest distance from the eye of a corner of the triangles seen around the
+         * pixel, metres (+∞ where the central samples saw the triangle met alone).
+         */
+        double nearestCandidateMetres;
     }
 
     /**
@@ -541,6 +571,7 @@ public final class Stitcher {
                     boolean simplified = seen.simplified()[t];
                     hint.incidenceSine = simplified ? seen.incidenceSine(t, dx, dy, dz) : 1; // only a simplified patch's is asked
                     hint.simplified = simplified;
+                    hint.nearestCandidateMetres = Double.POSITIVE_INFINITY;
                     return d;
                 }
             }
@@ -590,6 +621,14 @@ public final class Stitcher {
             boolean simplified = met >= 0 && seen.simplified()[met];
             hint.incidenceSine = simplified ? seen.incidenceSine(met, dx, dy, dz) : 1;
             hint.simplified = simplified;
+            double nearestSq = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < n; k++) {
+                double dSq = seen.cornerDistanceSquared(candidates[k]);
+                if (dSq < nearestSq) {
+                    nearestSq = dSq;
+                }
+            }
+            hint.nearestCandidateMetres = Math.sqrt(nearestSq);
             return best;
         }
         double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;

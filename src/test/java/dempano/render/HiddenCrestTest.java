@@ -1,0 +1,46 @@
+package dempano.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import dempano.PanoramaRenderer;
+import dempano.PanoramaRequest;
+import dempano.SharedData;
+import dempano.dem.DemDirectory;
+import dempano.panorama.ElevationRange;
+import dempano.panorama.Panorama;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A pixel's ray that passes under a crest between the view samples around it (none of their triangles met) and meets
+ * farther terrain beyond is searched on the surface from the terrain seen around it: at Mount Washington (real SRTM3
+ * tiles, 10 px/°, −5…5°, 100 km) no pixel is farther than the CPU reference by more than 5 % (581 were, the ray tens
+ * of metres inside a ridge 30 km off, most meeting the missing tile's sea behind it), and sky and terrain agree in
+ * every pixel.
+ */
+class HiddenCrestTest {
+    @Test
+    void noRayPassesThroughACrestToTheTerrainBehind() {
+        DemDirectory dem = new DemDirectory(SharedData.demDir());
+        PanoramaRequest req = PanoramaRequest.at(44.2706, -71.3033).withPixelsPerDegree(10)
+                .withElevationRange(new ElevationRange(-5, 5, false)).withColour(false);
+        Panorama gl, ref;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem); PanoramaRenderer cpu = PanoramaRenderer.openReference(dem)) {
+            gl = r.render(req);
+            ref = cpu.render(req);
+        }
+        int farther = 0, skyMismatch = 0, terrain = 0;
+        float[] g = gl.distanceArray(), t = ref.distanceArray();
+        for (int i = 0; i < g.length; i++) {
+            if (Float.isFinite(g[i]) != Float.isFinite(t[i])) {
+                skyMismatch++;
+            } else if (Float.isFinite(g[i])) {
+                terrain++;
+                farther += g[i] > 1.05 * t[i] ? 1 : 0;
+            }
+        }
+        System.out.printf("Mount Washington 10 px/°: %d terrain pixels, %d more than 5 %% farther than the reference, %d sky"
+                + " mismatches%n", terrain, farther, skyMismatch);
+        assertEquals(0, skyMismatch, "pixels sky in one and terrain in the other");
+        assertEquals(0, farther, "pixels more than 5 % farther than the reference");
+    }
+}
