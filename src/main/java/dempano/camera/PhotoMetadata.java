@@ -172,6 +172,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         if (Files.isDirectory(file)) {
             throw new PhotoMetadataException(name + ": is a folder, not a photograph");
         }
+        if (Files.exists(file) && !Files.isRegularFile(file)) { // a named pipe would be waited on for ever
+            throw new PhotoMetadataException(name + ": is not a regular file (a pipe or a device), not a photograph");
+        }
         Metadata metadata;
         try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
             metadata = ImageMetadataReader.readMetadata(in, Files.size(file));
@@ -198,6 +201,12 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
 
     /** Longest plausible 35 mm-equivalent focal length, mm (bridge cameras reach 3000). */
     static final double MAX_FOCAL35_MM = 5000;
+    /** A FocalLength beyond this, millimetres, is taken as garbage (the longest camera lenses are about 5 m). */
+    static final double MAX_FOCAL_MM = 5000;
+    /** A sensor's long side beyond this, millimetres, is taken as garbage (a 10 × 8 inch plate is 254 mm). */
+    static final double MAX_SENSOR_MM = 300;
+    /** A GPSAltitude beyond ±this, metres, is taken as garbage (4294967295 stands for "unknown" in some writers). */
+    static final double MAX_GPS_ALTITUDE_METRES = 100_000;
 
     /** The first {directory class, width tag, height tag} of the list that the metadata has both of; {0, 0} if none. */
     @SuppressWarnings("unchecked")
@@ -282,8 +291,19 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             Integer altRef = gps.getInteger(GpsDirectory.TAG_ALTITUDE_REF);
             if (altRef != null && altRef == 1) {
                 alt = -alt;
+            } else if (altRef != null && altRef != 0) {
+                problems.add("GPSAltitudeRef " + altRef + " is neither 0 (above sea level) nor 1 (below): taken as above");
+            }
+            if (Math.abs(alt) > MAX_GPS_ALTITUDE_METRES) { // 4294967295: "unknown" in some writers
+                problems.add(String.format(Locale.ROOT, "GPSAltitude %.0f m is beyond %.0f km: not used", alt,
+                        MAX_GPS_ALTITUDE_METRES / 1000));
+                alt = Double.NaN;
             }
             dir = value(gps.getRational(GpsDirectory.TAG_IMG_DIRECTION));
+            if (!(dir >= 0 && dir <= 360) && !Double.isNaN(dir)) { // 0 ≤ d < 360 by the standard
+                problems.add("GPSImgDirection " + shortest(dir) + "° is outside 0–360°: not used");
+                dir = Double.NaN;
+            }
             String ref = gps.getString(GpsDirectory.TAG_IMG_DIRECTION_REF);
             if (ref != null && ref.trim().equalsIgnoreCase("T")) {
                 dirRef = DirectionReference.TRUE;
@@ -297,6 +317,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         double focal = Double.NaN, focal35 = Double.NaN, sensorWidth = Double.NaN;
         if (exif != null) {
             focal = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_LENGTH)));
+            if (focal > MAX_FOCAL_MM) {
+                problems.add("FocalLength " + shortest(focal) + " mm is beyond any lens (" + shortest(MAX_FOCAL_MM) + " mm): not used");
+                focal = Double.NaN;
+            }
             Integer f35 = exif.getInteger(ExifSubIFDDirectory.TAG_35MM_FILM_EQUIV_FOCAL_LENGTH);
             focal35 = f35 == null ? Double.NaN : positive(f35);
             if (focal35 > MAX_FOCAL35_MM) { // 65535: "unknown" in some cameras' EXIF; a 0.03° view otherwise
@@ -414,7 +438,18 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         if (pw <= 0 || ph <= 0) {
             return Double.NaN;
         }
-        return Math.max(pw / xRes, ph / yRes) * unitMm;
+        double mm = Math.max(pw / xRes, ph / yRes) * unitMm;
+        if (mm > MAX_SENSOR_MM) {
+            problems.add("FocalPlaneX/YResolution give a sensor " + shortest(mm) + " mm wide, beyond any camera's ("
+                    + shortest(MAX_SENSOR_MM) + " mm): sensor size not used");
+            return Double.NaN;
+        }
+        return mm;
+    }
+
+    /** A value as written, without trailing zeros or an exponent (400, 42949672.95), for the problems' words. */
+    private static String shortest(double v) {
+        return java.math.BigDecimal.valueOf(v).round(new java.math.MathContext(10)).stripTrailingZeros().toPlainString();
     }
 
     /** An XMP angle, degrees: NaN where absent, or (with a problem said) not a plain decimal or beyond ±{@code limit}. */

@@ -310,18 +310,66 @@ public final class PhotoJob {
             List<String> warnings = new ArrayList<>();
             try {
                 reader.setInput(stream, true, true);
+                // The size from the header, before the pixels are decoded (a small file may declare gigapixels).
+                int w = reader.getWidth(0), h = reader.getHeight(0);
+                if (w > dempano.panorama.ViewLayout.MAX_VIEW_PX || h > dempano.panorama.ViewLayout.MAX_VIEW_PX) {
+                    throw new IOException(w + "×" + h + " pixels: at most " + dempano.panorama.ViewLayout.MAX_VIEW_PX
+                            + " on a side (the render of its view could not be made); scale it down");
+                }
                 reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
                 BufferedImage img = reader.read(0, reader.getDefaultReadParam());
-                for (String w : warnings) {
-                    if (w.toLowerCase(java.util.Locale.ROOT).contains("premature end")) {
-                        throw new IOException("the file ends before the image does: " + w);
+                for (String warning : warnings) {
+                    if (warning.toLowerCase(java.util.Locale.ROOT).contains("premature end")) {
+                        throw new IOException("the file ends before the image does: " + warning);
                     }
                 }
-                return img;
+                return eightBit(img);
             } finally {
                 reader.dispose();
             }
         }
+    }
+
+    /**
+     * Floating-point pixels (a 32-bit float TIFF) as 8-bit RGB: Java's colour model takes them as 0…1 and fails on
+     * larger values (0…255 floats threw deep in the overlay). Scaled by their largest value: 0…1 stays 0…1, anything
+     * larger is taken as 0…max. Other images are returned as they are.
+     */
+    static BufferedImage eightBit(BufferedImage img) {
+        int type = img.getRaster().getDataBuffer().getDataType();
+        if (type != java.awt.image.DataBuffer.TYPE_FLOAT && type != java.awt.image.DataBuffer.TYPE_DOUBLE) {
+            return img;
+        }
+        java.awt.image.Raster raster = img.getRaster();
+        int w = img.getWidth(), h = img.getHeight(), bands = raster.getNumBands();
+        int colourBands = bands >= 3 ? 3 : 1;
+        double max = 0;
+        double[] row = new double[w * bands];
+        for (int y = 0; y < h; y++) {
+            raster.getPixels(0, y, w, 1, row);
+            for (int x = 0; x < w; x++) {
+                for (int b = 0; b < colourBands; b++) {
+                    double v = row[x * bands + b];
+                    if (v > max) { // (NaN is not)
+                        max = v;
+                    }
+                }
+            }
+        }
+        double scale = 255 / (max <= 1 ? 1 : max);
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < h; y++) {
+            raster.getPixels(0, y, w, 1, row);
+            for (int x = 0; x < w; x++) {
+                int[] c = new int[3];
+                for (int b = 0; b < 3; b++) {
+                    double v = row[x * bands + (colourBands == 3 ? b : 0)] * scale;
+                    c[b] = v >= 0 ? (int) Math.min(255, Math.round(v)) : 0; // NaN and negatives black
+                }
+                out.setRGB(x, y, c[0] << 16 | c[1] << 8 | c[2]);
+            }
+        }
+        return out;
     }
 
     private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o) {

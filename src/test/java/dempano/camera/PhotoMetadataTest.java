@@ -362,4 +362,33 @@ class PhotoMetadataTest {
         PhotoMetadata superzoom = PhotoMetadata.read(new ExifJpeg().orientation(1).focal35(3000).write(dir, "z.jpg", 80, 60));
         assertEquals(3000, superzoom.focal35mmMm(), 0);
     }
+
+    /** Values no camera writes (placeholders for "unknown", garbage) are said and not used, instead of aborting or misleading. */
+    @Test
+    void valuesBeyondAnyCameraAreSaidAndNotUsed(@TempDir Path dir) throws Exception {
+        PhotoMetadata m = PhotoMetadata.read(new ExifJpeg().orientation(1).position(46.5, 8.25).altitude(7, 4294967295L)
+                .direction("T", 40_000).focal(4294967295L).focalPlane(1, 1_000_000, 1, 1_000_000, 4)
+                .write(dir, "garbage.jpg", 80, 60));
+        String problems = m.problems().toString();
+        assertTrue(Double.isNaN(m.gpsAltitudeMetres()), m.toString());
+        assertTrue(Double.isNaN(m.imageDirectionDeg()), m.toString());
+        assertTrue(Double.isNaN(m.focalLengthMm()), m.toString());
+        assertTrue(Double.isNaN(m.sensorWidthMm()), m.toString());
+        for (String said : List.of("GPSAltitudeRef 7 is neither 0", "GPSAltitude 42949673 m is beyond 100 km",
+                "GPSImgDirection 400° is outside 0–360°", "FocalLength 42949672.95 mm is beyond any lens (5000 mm)",
+                "sensor 80000000 mm wide")) {
+            assertTrue(problems.contains(said), said + " in " + problems);
+        }
+        assertEquals(46.5, m.latDeg(), 1e-7, "the rest is read");
+    }
+
+    /** A named pipe is refused at once (reading it waited for ever, and stalled a batch). */
+    @Test
+    void aPipeIsNotAPhotograph(@TempDir Path dir) throws Exception {
+        Path fifo = dir.resolve("fifo.jpg");
+        org.junit.jupiter.api.Assumptions.assumeTrue(new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor() == 0,
+                "mkfifo is not available");
+        PhotoMetadataException e = assertThrows(PhotoMetadataException.class, () -> PhotoMetadata.read(fifo));
+        assertTrue(e.getMessage().equals(fifo + ": is not a regular file (a pipe or a device), not a photograph"), e.getMessage());
+    }
 }

@@ -84,4 +84,37 @@ class PhotoJobReadTest {
                 + "  - no camera pitch in the metadata: give --pitch-deg", e.getMessage());
         PhotoJob.checkMatched(fitting.apply(0.05), open, java.util.List.of()); // unsure, but a pose: written, flagged
     }
+
+    /** Floating-point pixels (a float TIFF of 0…255 values) become 8-bit RGB scaled by their largest value (they threw). */
+    @Test
+    void floatPixelsBecomeEightBitScaledByTheirLargestValue() {
+        int w = 4, h = 2;
+        java.awt.image.WritableRaster raster = java.awt.image.Raster.createWritableRaster(
+                new java.awt.image.BandedSampleModel(java.awt.image.DataBuffer.TYPE_FLOAT, w, h, 1),
+                new java.awt.image.DataBufferFloat(w * h, 1), null);
+        float[] values = {0, 51, 102, 255, 25.5f, 127.5f, Float.NaN, -3};
+        raster.setPixels(0, 0, w, h, values);
+        java.awt.image.ColorModel cm = new java.awt.image.ComponentColorModel(
+                java.awt.color.ColorSpace.getInstance(java.awt.color.ColorSpace.CS_GRAY), false, false,
+                java.awt.Transparency.OPAQUE, java.awt.image.DataBuffer.TYPE_FLOAT);
+        BufferedImage in = new BufferedImage(cm, raster, false, null);
+        BufferedImage out = PhotoJob.eightBit(in);
+        int[] expected = {0, 51, 102, 255, 26, 128, 0, 0};
+        for (int i = 0; i < values.length; i++) {
+            int rgb = out.getRGB(i % w, i / w);
+            assertEquals(expected[i] * 0x010101, rgb & 0xffffff, "pixel " + i + " of value " + values[i]);
+        }
+        BufferedImage eight = gradient(3, 3);
+        assertTrue(PhotoJob.eightBit(eight) == eight, "8-bit images are returned as they are");
+    }
+
+    /** A header declaring more pixels than any view is refused before the pixels are decoded. */
+    @Test
+    void aPhotoLargerThanAnyViewIsRefusedFromItsHeader() throws IOException {
+        Path big = tmp.resolve("big.png");
+        ImageIO.write(new BufferedImage(16_385, 2, BufferedImage.TYPE_BYTE_BINARY), "png", big.toFile());
+        IOException e = assertThrows(IOException.class, () -> PhotoJob.readPixels(big));
+        assertEquals("16385×2 pixels: at most 16384 on a side (the render of its view could not be made); scale it down",
+                e.getMessage());
+    }
 }
