@@ -240,12 +240,10 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 && png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT) != null) {
             storedWidth = png.getInteger(PngDirectory.TAG_IMAGE_WIDTH);
             storedHeight = png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT);
-        } else if (exif != null && exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH) != null
-                && exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT) != null) {
-            storedWidth = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH);
-            storedHeight = exif.getInteger(ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT);
         } else {
-            // Other formats' headers (GIF, BMP, WebP; a TIFF's first image): the size their pixels will have.
+            // Other formats' headers (GIF, BMP, WebP): the size their pixels will have, before the EXIF sub-IFD's (a
+            // resized file often keeps the camera's there: a WebP was rendered at it); a TIFF's first image last (in a
+            // raw file that is often a small preview, the EXIF sub-IFD the sensor's image).
             int[] size = firstSize(metadata,
                     new Object[] {com.drew.metadata.gif.GifHeaderDirectory.class, com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_WIDTH,
                             com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_HEIGHT},
@@ -253,6 +251,8 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                             com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_HEIGHT},
                     new Object[] {com.drew.metadata.webp.WebpDirectory.class, com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_WIDTH,
                             com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_HEIGHT},
+                    new Object[] {ExifSubIFDDirectory.class, ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH,
+                            ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT},
                     new Object[] {ExifIFD0Directory.class, ExifIFD0Directory.TAG_IMAGE_WIDTH, ExifIFD0Directory.TAG_IMAGE_HEIGHT});
             storedWidth = size[0];
             storedHeight = size[1];
