@@ -465,14 +465,24 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 if (Math.abs(v) <= limit) {
                     return v;
                 }
-                problems.add("XMP " + property + " \"" + text + "\" is beyond ±" + (int) limit + "°: not used");
+                problems.add("XMP " + property + " \"" + quoted(text) + "\" is beyond ±" + (int) limit + "°: not used");
                 return Double.NaN;
             }
-            problems.add("XMP " + property + " \"" + text + "\" is not a number");
+            problems.add("XMP " + property + " \"" + quoted(text) + "\" is not a number");
             return Double.NaN;
         } catch (XMPException e) {
             return Double.NaN; // the namespace is not in this file
         }
+    }
+
+    /**
+     * A value from the file for a one-line message: control characters (line breaks) as '?', and at most 40
+     * characters (a 50 KB value was echoed whole to stderr and P.json).
+     */
+    static String quoted(String text) {
+        String clean = text.codePoints().map(c -> Character.isISOControl(c) ? '?' : c)
+                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
+        return clean.length() <= 40 ? clean : clean.substring(0, 40) + "… (" + clean.length() + " characters)";
     }
 
     /** Whether the displayed image is the stored one turned a quarter (EXIF orientation 5–8). */

@@ -190,6 +190,11 @@ class PhotoMetadataTest {
                 .write(dir, "bad-xmp.jpg", 80, 60));
         assertTrue(Double.isNaN(bad.xmpPitchDeg()));
         assertTrue(bad.problems().stream().anyMatch(s -> s.contains("minus ten")), bad.problems().toString());
+        // A long value with a line break: one line, cut to 40 characters and its length.
+        PhotoMetadata longValue = PhotoMetadata.read(new ExifJpeg().xmp("drone-dji:GimbalPitchDegree=\"1&#10;" + "x".repeat(5000)
+                + "\"").write(dir, "long-xmp.jpg", 80, 60));
+        assertEquals(List.of("XMP GimbalPitchDegree \"1?" + "x".repeat(38) + "… (5002 characters)\" is not a number"),
+                longValue.problems());
         // Beyond a turn (pitch ±90°, roll ±180°), or not a plain decimal: not used, and said.
         PhotoMetadata huge = PhotoMetadata.read(new ExifJpeg().xmp("drone-dji:GimbalYawDegree=\"1e308\""
                 + " drone-dji:GimbalPitchDegree=\"0x1p6\" drone-dji:GimbalRollDegree=\"-180\"").write(dir, "huge.jpg", 80, 60));
