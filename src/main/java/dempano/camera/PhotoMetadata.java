@@ -447,9 +447,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return mm;
     }
 
-    /** A value as written, without trailing zeros or an exponent (400, 42949672.95), for the problems' words. */
+    /** A value for the problems' words (400, 42949672.95). */
     private static String shortest(double v) {
-        return java.math.BigDecimal.valueOf(v).round(new java.math.MathContext(10)).stripTrailingZeros().toPlainString();
+        return dempano.util.Decimals.shortest(v, 10);
     }
 
     /** An XMP angle, degrees: NaN where absent, or (with a problem said) not a plain decimal or beyond ±{@code limit}. */

@@ -335,8 +335,7 @@ public final class Main implements Callable<Integer> {
             set.protect(summitsFile, "the summit list (--summits)");
             set.checkTargets(PanoramaWriter.suffixes(req.colour(), req.distance(), wanted, writing));
             System.err.printf(Locale.ROOT, "dempano: %.5f, %.5f, range %s km, DEM %s%n", lat, lon,
-                    new java.math.BigDecimal(req.rangeMetres() / 1000).round(new java.math.MathContext(3)).stripTrailingZeros()
-                            .toPlainString(), dem.describe());
+                    dempano.util.Decimals.shortest(req.rangeMetres() / 1000, 3), dem.describe());
             java.util.List<String> table = new java.util.ArrayList<>();
             // The GL context starts on another thread while the tiles load and the mesh is built; the renderer's
             // name is printed when the views are drawn (asking for it sooner would wait for the context).

@@ -18,6 +18,15 @@ public enum MissingTilePolicy {
     /** Fail with a {@link DemException} listing every missing tile. */
     ERROR;
 
+    /** The value of {@code --missing-tiles} that asks for this policy. */
+    public String flagValue() {
+        return switch (this) {
+            case AUTO -> "auto";
+            case SEA_LEVEL -> "sea";
+            case ERROR -> "error";
+        };
+    }
+
     /**
      * The checks of {@link #AUTO} that need the whole request: call after {@link Mosaic#around}.
      *

@@ -358,10 +358,10 @@ public final class PhotoJob {
         }
         double scale = 255 / (max <= 1 ? 1 : max);
         BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] c = new int[3];
         for (int y = 0; y < h; y++) {
             raster.getPixels(0, y, w, 1, row);
             for (int x = 0; x < w; x++) {
-                int[] c = new int[3];
                 for (int b = 0; b < 3; b++) {
                     double v = row[x * bands + (colourBands == 3 ? b : 0)] * scale;
                     c[b] = v >= 0 ? (int) Math.min(255, Math.round(v)) : 0; // NaN and negatives black

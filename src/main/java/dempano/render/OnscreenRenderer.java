@@ -415,7 +415,7 @@ public final class OnscreenRenderer extends SimpleApplication {
         sb.append(hit == null ? "crosshair: sky / beyond range\n" : String.format(Locale.ROOT,
                 "crosshair: DEM %.0f m at %.5f, %.5f, %.2f km away%n", hit[2], hit[0], hit[1], hit[3] / 1000));
         sb.append(String.format(Locale.ROOT, "exaggeration x%s, %s, wireframe %s, debug colours %s",
-                java.math.BigDecimal.valueOf(exaggeration).stripTrailingZeros().toPlainString(), refractionK == 1 ? "flat earth (k = 1)" : "refraction k = " + refractionK,
+                dempano.util.Decimals.shortest(exaggeration, 6), refractionK == 1 ? "flat earth (k = 1)" : "refraction k = " + refractionK,
                 wireframe ? "on" : "off", debugAids ? "on" : "off"));
         hud.setText(sb.toString());
         message.setText(status);
@@ -498,11 +498,7 @@ public final class OnscreenRenderer extends SimpleApplication {
                 "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), "dempano.cli.Main",
                 "--lat", Double.toString(geo[0]), "--lon", Double.toString(geo[1]), "--altitude-m", Double.toString(ground + above),
                 "--eye-height-m", "0", "--refraction", Double.toString(refractionK), "--out", prefix.toString(),
-                "--missing-tiles", switch (opt.missingTiles()) {
-                    case AUTO -> "auto";
-                    case SEA_LEVEL -> "sea";
-                    case ERROR -> "error";
-                }));
+                "--missing-tiles", opt.missingTiles().flagValue()));
         opt.demDirs().forEach(d -> cmd.addAll(List.of("--dem-dir", d.toString())));
         status = "panorama: rendering at " + String.format(Locale.ROOT, "%.5f, %.5f, %.0f m", geo[0], geo[1], geo[2]) + " …";
         Process proc;

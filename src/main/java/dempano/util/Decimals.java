@@ -14,6 +14,18 @@ public final class Decimals {
     private Decimals() {
     }
 
+    /**
+     * A number for messages as people write it: at most {@code significantDigits} significant digits, no exponent, no
+     * trailing zeros (400, 0.1, 42949672.95, 80000000); NaN and ±∞ as Java writes them.
+     */
+    public static String shortest(double v, int significantDigits) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        return java.math.BigDecimal.valueOf(v).round(new java.math.MathContext(significantDigits)).stripTrailingZeros()
+                .toPlainString();
+    }
+
     /** Whether {@code text} (not trimmed) is a plain decimal number; it may still overflow to ±∞ when parsed. */
     public static boolean isPlain(String text) {
         return text != null && PLAIN.matcher(text).matches();

@@ -13,4 +13,11 @@ class DecimalsTest {
     void onlyPlainDecimalsAreTaken(String text, boolean plain) {
         assertEquals(plain, Decimals.isPlain(text));
     }
+
+    @ParameterizedTest
+    @CsvSource({"400, 10, 400", "0.1, 3, 0.1", "42949672.95, 10, 42949672.95", "8e7, 10, 80000000", "100, 3, 100",
+        "123.456, 3, 123", "0.00012345, 2, 0.00012", "-2.50, 6, -2.5", "NaN, 3, NaN", "Infinity, 3, Infinity"})
+    void numbersForMessagesAsPeopleWriteThem(double v, int digits, String written) {
+        assertEquals(written, Decimals.shortest(v, digits));
+    }
 }
