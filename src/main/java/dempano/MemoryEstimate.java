@@ -76,6 +76,19 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
                 (int) Math.ceil(need / (double) (1L << 30)) + 1), this);
     }
 
+    /**
+     * The message for a photo's own view that needs more than {@code maxHeapBytes}: its size is the photo's, so
+     * the way out is more memory or a smaller copy of the photo (no flag sets it).
+     */
+    public String photoMessage(long maxHeapBytes) {
+        long need = heapBytes();
+        return String.format(Locale.ROOT, "the photo's view needs about %.2f GB of Java heap (%s) but the limit is %.2f GB:"
+                        + " give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg, or render a smaller copy of the photo (half"
+                        + " the width and height needs a quarter)",
+                need / 1e9, breakdown().replace("panorama pixels", "photo pixels"), maxHeapBytes / 1e9,
+                (int) Math.ceil(need / (double) (1L << 30)) + 1);
+    }
+
     /** Bytes held while the views are stitched. */
     public long stitchingBytes() {
         return (exactDistances ? 19 : 12) * viewPixels + 8 * panoramaPixels;

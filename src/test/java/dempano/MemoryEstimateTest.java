@@ -53,4 +53,15 @@ class MemoryEstimateTest {
                 && x.getMessage().contains("DEMPANO_OPTS=-Xmx"), x.getMessage());
         e.check(e.heapBytes()); // exactly enough: accepted
     }
+
+    @Test
+    void aPhotosViewIsAdvisedWhatAPhotoCanDo() {
+        // A photo's size is its own: no --width-px (refused with a photo), no --ppd; more memory or a smaller copy.
+        MemoryEstimate e = new MemoryEstimate(49_000_000, 48_000_000, 0, 3_000_000, true);
+        String m = e.photoMessage(400L << 20);
+        assertTrue(m.startsWith(String.format(java.util.Locale.ROOT, "the photo's view needs about %.2f GB of Java heap",
+                e.heapBytes() / 1e9)) && m.contains("48 M photo pixels") && m.contains("but the limit is 0.42 GB"), m);
+        assertTrue(m.contains("DEMPANO_OPTS=-Xmx3g") && m.contains("smaller copy of the photo"), m);
+        assertTrue(!m.contains("--width-px") && !m.contains("--ppd"), m);
+    }
 }

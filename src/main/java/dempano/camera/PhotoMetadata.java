@@ -485,6 +485,26 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         return clean.length() <= 40 ? clean : clean.substring(0, 40) + "… (" + clean.length() + " characters)";
     }
 
+    /**
+     * This metadata with the displayed size of the pixels as decoded, where the file's tags said another (a resized
+     * TIFF keeps the camera's ExifImageWidth/Height; which of a file's sizes its decoder takes is the decoder's):
+     * the pixels are what is rendered and matched, and a problem says which size the tags gave.
+     *
+     * @param displayedWidthPx  the decoded image's width, turned by the EXIF orientation, pixels
+     * @param displayedHeightPx the same for its height
+     */
+    public PhotoMetadata withDecodedSize(int displayedWidthPx, int displayedHeightPx) {
+        if (displayedWidthPx == widthPx && displayedHeightPx == heightPx) {
+            return this;
+        }
+        List<String> said = new ArrayList<>(problems);
+        if (widthPx > 0 && heightPx > 0) {
+            said.add("the file's tags give " + widthPx + " × " + heightPx + " px (as displayed) but its pixels are "
+                    + displayedWidthPx + " × " + displayedHeightPx + ": the pixels' size is used");
+        }
+        return new PhotoMetadata(source, displayedWidthPx, displayedHeightPx, orientation, gps, lens, xmp, List.copyOf(said));
+    }
+
     /** Whether the displayed image is the stored one turned a quarter (EXIF orientation 5–8). */
     public boolean quarterTurn() {
         return orientation >= 5;

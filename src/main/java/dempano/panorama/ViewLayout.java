@@ -25,6 +25,8 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
     public static final double MAX_SINGLE_VIEW_OFF_AXIS_DEG = 60;
     /** Largest angle, degrees, a camera view's ray may make with the views' common up-down plane: beyond it no perspective view covers it well. */
     public static final double MAX_CAMERA_TILT_DEG = 75;
+    /** How the message of a camera too wide for {@link #forTarget} begins (callers add where the field of view came from). */
+    public static final String TOO_WIDE = "field of view too wide for perspective views";
     /** View pixels of margin around a camera's rays, for the resampler's 4×4 neighbourhoods. */
     public static final int CAMERA_MARGIN_PX = 2;
 
@@ -160,7 +162,7 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
             double tilt = Math.toDegrees(Math.atan2(y, Math.hypot(x, z)));
             if (Math.abs(tilt) > MAX_CAMERA_TILT_DEG) {
                 throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
-                        "field of view too wide for perspective views: a ray %.1f° off the image's horizontal plane"
+                        TOO_WIDE + ": a ray %.1f° off the image's horizontal plane"
                                 + " (at most %.0f°)", tilt, MAX_CAMERA_TILT_DEG));
             }
             double yaw = Math.atan2(x, z);
@@ -170,7 +172,7 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
         int views = Math.toDegrees(maxOffAxis) <= MAX_SINGLE_VIEW_OFF_AXIS_DEG ? 1
                 : (int) Math.ceil(Math.toDegrees(yawMax - yawMin) / 80);
         if (views > 4) {
-            throw new IllegalArgumentException("field of view too wide for perspective views: "
+            throw new IllegalArgumentException(TOO_WIDE + ": "
                     + Math.round(Math.toDegrees(yawMax - yawMin)) + "° across");
         }
         double step = (yawMax - yawMin) / views;

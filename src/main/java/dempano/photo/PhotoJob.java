@@ -141,6 +141,7 @@ public final class PhotoJob {
             }
             if (stored != null) {
                 photo = CameraWriter.displayed(stored, meta.orientation());
+                meta = meta.withDecodedSize(photo.getWidth(), photo.getHeight());
             } else {
                 log.progress(in.image() + ": its metadata is read, but this Java has no decoder for its pixels (convert"
                         + " it to JPEG or PNG): nothing is estimated from the photo and it is not overlaid");
@@ -186,6 +187,14 @@ public final class PhotoJob {
                     camera.intrinsics().heightPx()) + " not used: the field of view is "
                     + (photo == null ? "given" : "known (flag or metadata)") + ", not estimated");
         }
+        if (open.any() && !open.hfov()) {
+            // A known field of view too wide to render fails now, not after seconds of estimating (level, as placed).
+            try {
+                dempano.panorama.ViewLayout.forTarget(CameraRequest.of(camera).view(), settings.supersampling());
+            } catch (IllegalArgumentException e) {
+                throw tooWideSaysWhy(e, camera);
+            }
+        }
         if (open.any()) {
             PhotoOrientation.Result est;
             // The range is a prior only around a heading that was given (override or metadata).
@@ -208,6 +217,9 @@ public final class PhotoJob {
                         + ", or give them (" + PhotoOverrides.HEADING + ", " + PhotoOverrides.PITCH + ", " + PhotoOverrides.ROLL
                         + ", " + PhotoOverrides.HFOV + ") so that nothing is estimated", e.estimate());
             } catch (IllegalArgumentException e) {
+                if (tooWideSaysWhy(e, camera) != e) {
+                    throw tooWideSaysWhy(e, camera);
+                }
                 List<String> missing = meta.missing(given);
                 throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())
                         + " from the photo: " + e.getMessage() + (missing.isEmpty() ? "" : "; give them instead:\n  - "
@@ -246,7 +258,16 @@ public final class PhotoJob {
             json.addProperty("matchedHeightPx", est.matchedHeightPx());
             orientationJson = gson.toJson(json);
         }
-        CameraImage rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
+        CameraImage rendered;
+        try {
+            rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
+        } catch (dempano.InsufficientMemoryException e) {
+            // A photo's size is its own: the camera-from-flags advice (--width-px/--height-px) is refused with a photo.
+            throw photo == null ? e : new dempano.InsufficientMemoryException(
+                    e.estimate().photoMessage(Runtime.getRuntime().maxMemory()), e.estimate());
+        } catch (IllegalArgumentException e) {
+            throw tooWideSaysWhy(e, camera);
+        }
         List<SummitSighting> sightings = null;
         if (in.summits() != null) {
             SummitList placed = SummitProjector.placedOnDem(in.summits(), renderer.dem(), rendered.metadata());
@@ -411,5 +432,20 @@ public final class PhotoJob {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         dempano.io.Png.write(image, b);
         return b.toByteArray();
+    }
+
+    /**
+     * A field of view too wide to render, with where it came from (the intrinsics' line of the provenance: an EXIF
+     * FocalLengthIn35mmFilm of 1 or 2 mm is a broken tag or a fisheye) and the flag that sets it instead; any other
+     * error as it is.
+     */
+    static IllegalArgumentException tooWideSaysWhy(IllegalArgumentException e, PhotoCamera camera) {
+        if (e.getMessage() == null || !e.getMessage().startsWith(dempano.panorama.ViewLayout.TOO_WIDE)) {
+            return e;
+        }
+        String source = camera.provenance().stream().filter(l -> l.startsWith("focal length ")).findFirst()
+                .map(l -> l.replaceFirst(" \\(.*", "")).orElse(null);
+        return new IllegalArgumentException(e.getMessage() + (source == null ? "" : "; the " + source) + ": give "
+                + PhotoOverrides.HFOV + " (a pinhole camera's horizontal field of view) or a calibration", e);
     }
 }

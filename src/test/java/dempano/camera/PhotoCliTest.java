@@ -203,6 +203,84 @@ class PhotoCliTest {
     }
 
     @Test
+    void aFieldOfViewTooWideToRenderNamesWhereItCameFrom() throws IOException {
+        // FocalLengthIn35mmFilm 1 or 2 mm (a fisheye's or a broken EXIF's) gives a view no perspective render holds:
+        // the error says so and names the tag and the flags that set the field of view instead.
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        for (int mm : new int[] {1, 2}) {
+            Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).focal35(mm).write(tmp, "wide" + mm + ".jpg", 64, 48);
+            for (boolean poseGiven : new boolean[] {true, false}) { // rendered at once, or estimated first
+                java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("photo", jpg.toString(),
+                        "--dem-dir", dem.toString(), "--out", tmp.resolve("w" + mm).toString(), "--range-km", "20"));
+                if (poseGiven) {
+                    args.addAll(java.util.List.of("--heading-deg", "10", "--pitch-deg", "0", "--roll-deg", "0"));
+                }
+                Run r = run(args.toArray(String[]::new));
+                assertTrue(r.exit() != 0, r.err());
+                String error = r.err().substring(r.err().lastIndexOf("dempano: "));
+                assertTrue(error.startsWith("dempano: field of view too wide for perspective views")
+                        && error.contains("EXIF FocalLengthIn35mmFilm " + mm + " mm")
+                        && error.contains(PhotoOverrides.HFOV), r.err());
+                assertFalse(r.err().contains("\tat "), r.err());
+                assertTrue(Files.notExists(tmp.resolve("w" + mm + ".png")));
+            }
+        }
+    }
+
+    /**
+     * An uncompressed RGB TIFF of {@code w} × {@code h} pixels (a sky-blue upper half, green below) whose EXIF sub-IFD
+     * keeps another size, as a resized camera file does: PixelX/YDimension {@code exifW} × {@code exifH}.
+     */
+    static Path tiffWithStaleExifSize(Path file, int w, int h, int exifW, int exifH) throws IOException {
+        int ifd0 = 8, entries0 = 10, bits = ifd0 + 2 + entries0 * 12 + 4, exifIfd = bits + 6, pixels = exifIfd + 2 + 2 * 12 + 4;
+        ByteBuffer b = ByteBuffer.allocate(pixels + w * h * 3).order(ByteOrder.LITTLE_ENDIAN);
+        b.put((byte) 'I').put((byte) 'I').putShort((short) 42).putInt(ifd0);
+        b.putShort((short) entries0);
+        int[][] tags = { // tag, type (3 SHORT, 4 LONG), count, value or offset
+            {256, 3, 1, w}, {257, 3, 1, h}, {258, 3, 3, bits}, {259, 3, 1, 1}, {262, 3, 1, 2}, {273, 4, 1, pixels},
+            {277, 3, 1, 3}, {278, 3, 1, h}, {279, 4, 1, w * h * 3}, {34665, 4, 1, exifIfd}};
+        for (int[] t : tags) {
+            b.putShort((short) t[0]).putShort((short) t[1]).putInt(t[2]);
+            if (t[1] == 3 && t[2] == 1) {
+                b.putShort((short) t[3]).putShort((short) 0);
+            } else {
+                b.putInt(t[3]);
+            }
+        }
+        b.putInt(0);
+        b.putShort((short) 8).putShort((short) 8).putShort((short) 8);
+        b.putShort((short) 2);
+        b.putShort((short) 40962).putShort((short) 4).putInt(1).putInt(exifW);
+        b.putShort((short) 40963).putShort((short) 4).putInt(1).putInt(exifH);
+        b.putInt(0);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                boolean sky = y < h / 2;
+                b.put((byte) (sky ? 120 : 40)).put((byte) (sky ? 170 : 110)).put((byte) (sky ? 230 : 40));
+            }
+        }
+        return Files.write(file, b.array());
+    }
+
+    @Test
+    void aTiffWhoseExifKeepsAnotherSizeIsRenderedAtItsPixelsSizeAndSaysSo() throws IOException {
+        // A TIFF resized from 1200 × 800 stopped with "the photo is 64×48 pixels as displayed, the camera's image
+        // 1200×800", naming neither the file nor the tag.
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path tif = tiffWithStaleExifSize(tmp.resolve("resized.tif"), 64, 48, 1200, 800);
+        assertEquals(64, ImageIO.read(tif.toFile()).getWidth(), "the JDK decodes the hand-made TIFF");
+        String prefix = tmp.resolve("tif").toString();
+        Run r = run("photo", tif.toString(), "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20", "--lat",
+                "46.5", "--lon", "8.5", "--heading-deg", "200", "--pitch-deg", "-2", "--roll-deg", "0", "--hfov-deg", "50");
+        assertEquals(0, r.exit(), r.err());
+        checkOutputs(prefix, 64, 48);
+        assertTrue(r.err().contains("the file's tags give 1200 × 800 px (as displayed) but its pixels are 64 × 48: the"
+                + " pixels' size is used"), r.err());
+    }
+
+    @Test
     void whatIsMissingIsNamedWithItsFlag() throws IOException {
         Path dem = Files.createDirectories(tmp.resolve("dem"));
         tile(dem, 46, 8);
