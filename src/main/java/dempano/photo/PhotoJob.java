@@ -338,11 +338,20 @@ public final class PhotoJob {
                             + " on a side (the render of its view could not be made); scale it down");
                 }
                 reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
-                BufferedImage img = reader.read(0, reader.getDefaultReadParam());
+                java.util.Iterator<javax.imageio.ImageTypeSpecifier> types = reader.getImageTypes(0);
+                javax.imageio.ImageTypeSpecifier raw = types.hasNext() ? types.next() : null; // (getRawImageType: null for CMYK)
+                boolean cmyk = raw != null && raw.getNumBands() == 4
+                        && raw.getColorModel().getColorSpace().getType() == java.awt.color.ColorSpace.TYPE_CMYK;
+                // A CMYK JPEG's samples as stored (read() hands them over inverted, in a colour space that washes them out).
+                java.awt.image.Raster cmykSamples = cmyk ? reader.readRaster(0, null) : null;
+                BufferedImage img = cmyk ? null : reader.read(0, reader.getDefaultReadParam());
                 for (String warning : warnings) {
                     if (warning.toLowerCase(java.util.Locale.ROOT).contains("premature end")) {
                         throw new IOException("the file ends before the image does: " + warning);
                     }
+                }
+                if (cmyk) {
+                    return cmykToRgb(cmykSamples, adobeMarker(reader));
                 }
                 return eightBit(img);
             } finally {
@@ -391,6 +400,48 @@ public final class PhotoJob {
             }
         }
         return out;
+    }
+
+    /**
+     * A CMYK JPEG's pixels as RGB. The JDK decodes them with a colour space that washes them out (red 200,40,40 came
+     * out 229,110,110), its samples inverted. Naive conversion, R = (1 − C)(1 − K) and so on, as without a colour profile: the skyline
+     * needs the sky's hue and brightness, not print colours. A file with an Adobe APP14 marker (Photoshop's, and most
+     * CMYK JPEGs) stores the inks inverted, as libjpeg and the other readers take them.
+     *
+     * @param raster        the 4 bands as stored in the file (8 bits; the reader's readRaster)
+     * @param adobeInverted  whether the file has an Adobe APP14 marker
+     */
+    static BufferedImage cmykToRgb(java.awt.image.Raster raster, boolean adobeInverted) {
+        int w = raster.getWidth(), h = raster.getHeight();
+        int[] row = new int[w * 4];
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < h; y++) {
+            raster.getPixels(0, y, w, 1, row);
+            for (int x = 0; x < w; x++) {
+                int rgb = 0;
+                int k = adobeInverted ? row[4 * x + 3] : 255 - row[4 * x + 3]; // 255 − K: the light left after black
+                for (int b = 0; b < 3; b++) {
+                    int ink = adobeInverted ? row[4 * x + b] : 255 - row[4 * x + b];
+                    rgb = rgb << 8 | (ink * k + 127) / 255;
+                }
+                out.setRGB(x, y, rgb);
+            }
+        }
+        return out;
+    }
+
+    /** Whether the image's JPEG metadata has an Adobe APP14 marker; false where it cannot be read. */
+    private static boolean adobeMarker(javax.imageio.ImageReader reader) {
+        try {
+            javax.imageio.metadata.IIOMetadata m = reader.getImageMetadata(0);
+            if (m == null || !java.util.Arrays.asList(m.getMetadataFormatNames()).contains("javax_imageio_jpeg_image_1.0")) {
+                return false;
+            }
+            org.w3c.dom.Node tree = m.getAsTree("javax_imageio_jpeg_image_1.0");
+            return tree instanceof org.w3c.dom.Element e && e.getElementsByTagName("app14Adobe").getLength() > 0;
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
     }
 
     private static PhotoCamera resolve(PhotoMetadata meta, PhotoOverrides o) {

@@ -108,6 +108,60 @@ class PhotoJobReadTest {
         assertTrue(PhotoJob.eightBit(eight) == eight, "8-bit images are returned as they are");
     }
 
+    /**
+     * A CMYK JPEG of three bars (red, green, blue as 200/40 mixes) written by the JDK, its inks as they are, and the
+     * same file with an Adobe APP14 marker and the inks inverted, as Photoshop and Pillow write them: both read as the
+     * bars' RGB within JPEG's error (the JDK's own conversion gave red as 229,110,110, washed out).
+     */
+    @Test
+    void cmykJpegsReadAsTheirColours() throws IOException {
+        int[][] bars = {{200, 40, 40}, {40, 200, 40}, {40, 40, 200}};
+        for (boolean adobe : new boolean[] {false, true}) {
+            java.awt.image.WritableRaster r = java.awt.image.Raster.createInterleavedRaster(
+                    java.awt.image.DataBuffer.TYPE_BYTE, 120, 80, 4, null);
+            for (int y = 0; y < 80; y++) {
+                for (int x = 0; x < 120; x++) {
+                    int[] rgb = bars[x / 40];
+                    int[] ink = {255 - rgb[0], 255 - rgb[1], 255 - rgb[2], 0}; // C, M, Y, K
+                    for (int b = 0; b < 4; b++) {
+                        ink[b] = adobe ? 255 - ink[b] : ink[b];
+                    }
+                    r.setPixel(x, y, ink);
+                }
+            }
+            java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+            javax.imageio.ImageWriter writer = ImageIO.getImageWritersByFormatName("jpeg").next();
+            try (javax.imageio.stream.ImageOutputStream out = ImageIO.createImageOutputStream(bytes)) {
+                writer.setOutput(out);
+                javax.imageio.ImageWriteParam p = writer.getDefaultWriteParam();
+                p.setCompressionMode(javax.imageio.ImageWriteParam.MODE_EXPLICIT);
+                p.setCompressionQuality(0.95f);
+                writer.write(null, new javax.imageio.IIOImage(r, null, null), p);
+            } finally {
+                writer.dispose();
+            }
+            byte[] jpeg = bytes.toByteArray();
+            if (adobe) { // APP14 "Adobe", version 100, flags 0, transform 0 (no colour transform), right after SOI
+                byte[] app14 = {(byte) 0xFF, (byte) 0xEE, 0, 14, 'A', 'd', 'o', 'b', 'e', 0, 100, 0, 0, 0, 0, 0};
+                byte[] with = new byte[jpeg.length + app14.length];
+                System.arraycopy(jpeg, 0, with, 0, 2);
+                System.arraycopy(app14, 0, with, 2, app14.length);
+                System.arraycopy(jpeg, 2, with, 2 + app14.length, jpeg.length - 2);
+                jpeg = with;
+            }
+            Path file = Files.write(tmp.resolve("cmyk-" + adobe + ".jpg"), jpeg);
+            BufferedImage img = PhotoJob.readPixels(file);
+            for (int bar = 0; bar < 3; bar++) {
+                int rgb = img.getRGB(20 + 40 * bar, 40);
+                int[] got = {rgb >> 16 & 255, rgb >> 8 & 255, rgb & 255};
+                for (int b = 0; b < 3; b++) {
+                    assertTrue(Math.abs(got[b] - bars[bar][b]) <= 6, (adobe ? "Adobe" : "plain") + " bar " + bar
+                            + ": " + Arrays.toString(got) + " for " + Arrays.toString(bars[bar]));
+                }
+            }
+        }
+    }
+
     /** A header declaring more pixels than any view is refused before the pixels are decoded. */
     @Test
     void aPhotoLargerThanAnyViewIsRefusedFromItsHeader() throws IOException {
