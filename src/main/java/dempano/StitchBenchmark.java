@@ -38,11 +38,14 @@ public final class StitchBenchmark implements Callable<Integer> {
     int runs;
 
     public static void main(String[] args) {
-        System.exit(new CommandLine(new StitchBenchmark()).execute(args));
+        System.exit(dempano.bench.ReportTool.run(new StitchBenchmark(), args));
     }
 
     @Override
     public Integer call() throws Exception {
+        if (runs < 1) {
+            throw new IllegalArgumentException("--runs must be at least 1, got " + runs);
+        }
         List<PanoramaRenderer.StitchInputs> kept = java.util.Collections.synchronizedList(new ArrayList<>());
         PanoramaRenderer.stitchTap = kept::add;
         PanoramaRequest req = PanoramaRequest.at(lat, lon).withRangeMetres(rangeKm * 1000).withPixelsPerDegree(ppd)

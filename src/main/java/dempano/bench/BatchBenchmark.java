@@ -46,7 +46,7 @@ public final class BatchBenchmark implements Callable<Integer> {
     String settings;
 
     public static void main(String[] args) {
-        System.exit(new CommandLine(new BatchBenchmark()).execute(args));
+        System.exit(ReportTool.run(new BatchBenchmark(), args));
     }
 
     /** The grid: 5 columns, 0.03° of latitude (3.3 km) and 0.04° of longitude (3.2 km at 44° N) apart, centred. */
@@ -66,7 +66,30 @@ public final class BatchBenchmark implements Callable<Integer> {
             System.err.println("bench-batch: " + dempano + " is missing: run gradle installDist first");
             return 1;
         }
+        if (rounds < 1 || viewpoints < 2) { // (rows 2–N: at least two viewpoints)
+            throw new IllegalArgumentException("--rounds must be at least 1 and --viewpoints at least 2, got " + rounds
+                    + " and " + viewpoints);
+        }
         Path tmp = Files.createTempDirectory("dempano-bench-batch");
+        try {
+            return measure(tmp);
+        } catch (IOException | InterruptedException | RuntimeException e) {
+            // Its resident process too, if a failure left it running: it would hold a GB for 10 minutes.
+            if (Files.exists(tmp.resolve("resident"))) {
+                try {
+                    run(List.of(dempano.toString(), "resident", "stop"), tmp, Map.of("DEMPANO_RESIDENT", "on",
+                            "DEMPANO_RESIDENT_DIR", tmp.resolve("resident").toString()));
+                } catch (IOException stop) {
+                    e.addSuppressed(stop);
+                }
+            }
+            throw e;
+        } finally {
+            deleteTree(tmp);
+        }
+    }
+
+    private int measure(Path tmp) throws IOException, InterruptedException {
         List<double[]> at = grid(latDeg, lonDeg, viewpoints);
         StringBuilder csv = new StringBuilder("id,lat,lon\n");
         for (int i = 0; i < at.size(); i++) {
@@ -110,7 +133,6 @@ public final class BatchBenchmark implements Callable<Integer> {
                         round + 1, resident ? "resident" : "single", (resident ? residentMean : singleMean)[round], viewpoints);
             }
         }
-        deleteTree(tmp);
         System.out.printf(Locale.ROOT, "%d viewpoints about 3 km apart around %.4f, %.4f; %s; PNG + distance written; "
                 + "%d alternating rounds, median of rounds; patch deviations kept on disk in the run's own folder, "
                 + "filled by its first process%n%n", viewpoints, latDeg, lonDeg, settings, rounds);

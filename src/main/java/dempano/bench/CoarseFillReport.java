@@ -37,20 +37,31 @@ public final class CoarseFillReport {
     private CoarseFillReport() {
     }
 
-    public static void main(String[] args) throws Exception {
-        Path dem = Path.of("../shared/dem"), summits = Path.of("../shared/peaks/alps.txt"), out = Path.of("docs");
-        for (int i = 0; i + 1 < args.length; i += 2) {
-            switch (args[i]) {
-                case "--dem" -> dem = Path.of(args[i + 1]);
-                case "--summits" -> summits = Path.of(args[i + 1]);
-                case "--out" -> out = Path.of(args[i + 1]);
-                default -> throw new IllegalArgumentException("unknown argument " + args[i]);
-            }
+    public static void main(String[] args) {
+        System.exit(ReportTool.run(new Command(), args));
+    }
+
+    /** The command line: {@code --dem DIR} (its N46E008.hgt), {@code --summits FILE}, {@code --out DIR}. */
+    @picocli.CommandLine.Command(name = "coarseFillReport", mixinStandardHelpOptions = true,
+            description = "Fills held-out voids of N46E008 from a 30\u2033 average of it; writes coarse-fill.md.")
+    static final class Command implements java.util.concurrent.Callable<Integer> {
+        @picocli.CommandLine.Option(names = "--dem", description = "SRTM tiles (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
+        Path dem;
+        @picocli.CommandLine.Option(names = "--summits", description = "Surveyed summits (default: ${DEFAULT-VALUE}).",
+                defaultValue = "../shared/peaks/alps.txt")
+        Path summits;
+        @picocli.CommandLine.Option(names = "--out", description = "Folder for coarse-fill.md (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
+        Path out;
+
+        @Override
+        public Integer call() throws Exception {
+            Path folder = ReportTool.outputFolder(out);
+            ReportTool.inputs(dem.resolve("N46E008.hgt"), summits);
+            String md = report(dem.resolve("N46E008.hgt"), summits);
+            dempano.io.AtomicFiles.write(folder.resolve("coarse-fill.md"), o -> o.write(md.getBytes(StandardCharsets.UTF_8)));
+            System.out.print(md);
+            return 0;
         }
-        String md = report(dem.resolve("N46E008.hgt"), summits);
-        Files.createDirectories(out);
-        Files.writeString(out.resolve("coarse-fill.md"), md, StandardCharsets.UTF_8);
-        System.out.print(md);
     }
 
     /** The fills compared: name, and the second source's blend (null: no second source). */

@@ -16,6 +16,7 @@ import dempano.orient.SkylineExtractor;
 import dempano.panorama.ElevationRange;
 import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
+import dempano.util.Decimals;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
@@ -43,7 +44,34 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * (default 100), {@code --seed S} (default 1), {@code --fine true} (the fine stage on camera renders), {@code --only I,J,...} (orient only these photos, numbered as in the
  * report; the others' poses are still drawn, so each listed photo is the one a full run has).
  */
-public final class OrientationReport {
+@picocli.CommandLine.Command(name = "orientationReport", mixinStandardHelpOptions = true,
+        description = "Orients synthetic photos (CPU reference renders of ../shared scenes); writes orientation.md.")
+public final class OrientationReport implements java.util.concurrent.Callable<Integer> {
+    @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
+            defaultValue = "../shared")
+    Path shared;
+    @picocli.CommandLine.Option(names = "--out", description = "Folder for the report (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
+    Path out;
+    @picocli.CommandLine.Option(names = "--photos", description = "Photos, spread over the scenes (default: ${DEFAULT-VALUE}).",
+            defaultValue = "100")
+    int photos;
+    @picocli.CommandLine.Option(names = "--seed", description = "Seed of the pose draws (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    long seed;
+    @picocli.CommandLine.Option(names = "--fine", arity = "1", description = "The fine stage on camera renders (default: ${DEFAULT-VALUE}).",
+            defaultValue = "false")
+    boolean fine;
+    @picocli.CommandLine.Option(names = "--steps", arity = "1", description = "Run the five steps; false: the altitude check alone,"
+            + " written to orientation-altitude-up<M>m (or down<M>m).md/.csv (default: ${DEFAULT-VALUE}).", defaultValue = "true")
+    boolean steps;
+    @picocli.CommandLine.Option(names = "--altitude-test-m", description = "The altitude check's eye offset, metres; negative: the"
+            + " estimator's eye that much higher (default: ${DEFAULT-VALUE}).", defaultValue = "25")
+    double altitudeTestMetres;
+    @picocli.CommandLine.Option(names = "--only", split = ",", description = "Orient only these photos of the run (numbered as in"
+            + " the report; the others' poses are still drawn).")
+    List<Integer> onlyPhotos;
+
+    private OrientationReport() { // run through main
+    }
     static final int PHOTO_W = 480, PHOTO_H = 320;
     static final double RANGE_METRES = 50_000;
     static final double REFERENCE_PPD = 20, ESTIMATOR_PPD = 10;
@@ -93,9 +121,6 @@ public final class OrientationReport {
         static double headingError(OrientationEstimate e, double truthDeg) {
             return Double.isNaN(e.headingDeg()) ? 180 : OrientationEstimator.headingGap(e.headingDeg(), truthDeg);
         }
-    }
-
-    private OrientationReport() {
     }
 
     static final String PREAMBLE_TEMPLATE = """
@@ -203,30 +228,29 @@ public final class OrientationReport {
 
             """;
 
-    public static void main(String[] args) throws IOException {
-        Path shared = Path.of("../shared"), out = Path.of("docs");
-        int photos = 100;
-        long seed = 1;
-        java.util.Set<Integer> only = java.util.Set.of();
-        for (int i = 0; i < args.length; i += 2) {
-            if (i + 1 == args.length) {
-                throw new IllegalArgumentException("usage: OrientationReport [--shared DIR] [--out DIR] [--photos N]"
-                        + " [--seed S] [--fine true|false] [--only I,J,...] [--altitude-test-m M] [--steps true|false]; " + args[i] + " has no value");
-            }
-            switch (args[i]) {
-                case "--shared" -> shared = Path.of(args[i + 1]);
-                case "--out" -> out = Path.of(args[i + 1]);
-                case "--photos" -> photos = Integer.parseInt(args[i + 1]);
-                case "--seed" -> seed = Long.parseLong(args[i + 1]);
-                case "--fine" -> FINE = Boolean.parseBoolean(args[i + 1]);
-                case "--steps" -> STEPS = Boolean.parseBoolean(args[i + 1]);
-                case "--altitude-test-m" -> ALTITUDE_TEST_METRES = Double.parseDouble(args[i + 1]);
-                case "--only" -> only = java.util.Arrays.stream(args[i + 1].split(",")).filter(x -> !x.isBlank())
-                        .map(Integer::valueOf).collect(java.util.stream.Collectors.toSet());
-                default -> throw new IllegalArgumentException("unknown argument " + args[i]);
+    public static void main(String[] args) {
+        System.exit(ReportTool.run(new OrientationReport(), args));
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        if (photos < 1) {
+            throw new IllegalArgumentException("--photos must be at least 1, got " + photos);
+        }
+        if (!Double.isFinite(altitudeTestMetres) || Math.abs(altitudeTestMetres) > 500) {
+            throw new IllegalArgumentException("--altitude-test-m must be within ±500 m, got " + altitudeTestMetres);
+        }
+        java.util.Set<Integer> only = onlyPhotos == null ? java.util.Set.of() : new java.util.TreeSet<>(onlyPhotos);
+        for (int i : only) {
+            if (i < 0 || i >= photos) {
+                throw new IllegalArgumentException("--only lists photo " + i + ", but the run's photos are 0–" + (photos - 1));
             }
         }
-        Files.createDirectories(out);
+        FINE = fine;
+        STEPS = steps;
+        ALTITUDE_TEST_METRES = altitudeTestMetres;
+        Path out = ReportTool.outputFolder(this.out);
+        ReportTool.inputs(shared.resolve("dem"));
         DemDirectory dem = new DemDirectory(shared.resolve("dem"));
         List<Row> rows = new ArrayList<>();
         List<AltitudeRow> altitudeRows = new ArrayList<>();
@@ -239,6 +263,12 @@ public final class OrientationReport {
             for (int s = 0; s < SCENES.size(); s++) {
                 Scene scene = SCENES.get(s);
                 int n = photos / SCENES.size() + (s < photos % SCENES.size() ? 1 : 0);
+                if (n == 0) { // (no pose is drawn in it either: the other scenes' draws stay the same)
+                    refSeconds.add(Double.NaN);
+                    glSeconds.add(Double.NaN);
+                    glCpuSeconds.add(Double.NaN);
+                    continue;
+                }
                 PanoramaRequest base = PanoramaRequest.at(scene.latDeg(), scene.lonDeg()).withRangeMetres(RANGE_METRES);
                 long t0 = System.nanoTime();
                 Panorama ref = reference.render(base.withPixelsPerDegree(REFERENCE_PPD)
@@ -267,8 +297,9 @@ public final class OrientationReport {
                         : dempano.orient.PhotoOrientation.reference(gl.render(estBase.withOffsetMetres(assumedOffset)));
                 OrientationEstimator.RaisedReference checkRaised = assumedOffset == 0 ? raised
                         : m -> dempano.orient.PhotoOrientation.reference(gl.render(estBase.withOffsetMetres(assumedOffset + m)));
-                System.err.printf(Locale.ROOT, "%s: reference %.1f s, OpenGL %.1f s%n", scene.name(),
-                        refSeconds.get(s), glSeconds.get(s));
+                System.err.printf(Locale.ROOT, "%s: reference %.1f s (and %s), OpenGL %.1f s%n", scene.name(),
+                        refSeconds.get(s), ALTITUDE_TEST_METRES <= 0 ? "no other" : String.format(Locale.ROOT, "another %.0f m up",
+                                ALTITUDE_TEST_METRES), glSeconds.get(s));
                 for (int p = 0; p < n; p++) {
                     double heading, pitch, roll, hfov;
                     while (true) {
@@ -365,19 +396,42 @@ public final class OrientationReport {
                 }
             }
         }
-        if (!STEPS) {
-            writeAltitudeCsv(altitudeRows, out.resolve("orientation-altitude.csv"));
-            Files.writeString(out.resolve("orientation-altitude.md"), altitudeMarkdown(altitudeRows));
-            System.out.println("wrote " + out.resolve("orientation-altitude.md"));
-            return;
+        if (!STEPS) { // beside the report's own altitude check, not over it
+            String stem = "orientation-altitude-" + (ALTITUDE_TEST_METRES < 0 ? "down" : "up")
+                    + Decimals.shortest(Math.abs(ALTITUDE_TEST_METRES), 6) + "m";
+            writeAltitudeCsv(altitudeRows, out.resolve(stem + ".csv"));
+            String md = altitudeMarkdown(altitudeRows).replace("`orientation-altitude.csv`", "`" + stem + ".csv`");
+            write(out.resolve(stem + ".md"), md);
+            System.out.println("wrote " + out.resolve(stem + ".md"));
+            return 0;
         }
         writeCsv(rows, out.resolve("orientation.csv"));
         chart(rows, out.resolve("orientation.png"));
         examples(examples, out.resolve("orientation-examples.png"));
         writeAltitudeCsv(altitudeRows, out.resolve("orientation-altitude.csv"));
-        Files.writeString(out.resolve("orientation.md"), markdown(rows, new Timing(glSeconds, glCpuSeconds, refSeconds), new Rejected(rejected, rejectedMissing), photos, seed)
-                + altitudeMarkdown(altitudeRows));
+        write(out.resolve("orientation.md"), markdown(rows, new Timing(glSeconds, glCpuSeconds, refSeconds),
+                new Rejected(rejected, rejectedMissing), new Run(photos, seed, only)) + altitudeMarkdown(altitudeRows) + HISTORY);
         System.out.println("wrote " + out.resolve("orientation.md"));
+        return 0;
+    }
+
+    /** The photos asked for: how many, the seed of their poses, and those oriented (empty: all). */
+    record Run(int photos, long seed, java.util.Set<Integer> only) {
+        /** "100 photos, seed 1", or "photos 0, 99 of a run of 100, seed 1 (--only)". */
+        String describe() {
+            return only.isEmpty() ? photos + " photos, seed " + seed : "photo" + (only.size() > 1 ? "s " : " ")
+                    + only.stream().map(String::valueOf).collect(java.util.stream.Collectors.joining(", ")) + " of a run of "
+                    + photos + ", seed " + seed + " (`-Ponly`)";
+        }
+    }
+
+    /** The hand-written notes on earlier runs, linked from the generated report (which would otherwise drop them). */
+    static final String HISTORY = "\nEarlier runs and checks made by hand (the eye 12 m off and 25 m lower than assumed, how the"
+            + " altitude's standard error and the rule against unmeasured eyes came about, timings):"
+            + " [orientation-history.md](orientation-history.md).\n";
+
+    private static void write(Path file, String text) throws IOException {
+        dempano.io.AtomicFiles.write(file, o -> o.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
     }
 
     /** The priors of every estimate: none, the altitude free (refined where the skyline constrains it). */
@@ -508,13 +562,17 @@ public final class OrientationReport {
     record Rejected(int skyline, int missingData) {
     }
 
-    static String markdown(List<Row> rows, Timing timing, Rejected rejected, int photos, long seed) {
-        List<Double> gl = timing.gl(), ref = timing.ref();
+    static String markdown(List<Row> rows, Timing timing, Rejected rejected, Run run) {
+        // (NaN: a scene without photos, not rendered)
+        List<Double> gl = timing.gl().stream().filter(Double::isFinite).toList(),
+                ref = timing.ref().stream().filter(Double::isFinite).toList(),
+                glCpu = timing.glCpu().stream().filter(Double::isFinite).toList();
         StringBuilder b = new StringBuilder();
         b.append(PREAMBLE_TEMPLATE.replace("%EDGE_WEIGHT%", String.format(Locale.ROOT, "%.2f", OrientationEstimator.EDGE_WEIGHT))
                 .replace("%UNSURE_RULE%", OrientationEstimator.UNSURE_RULE));
         b.append("## Results\n\n");
-        b.append("Generated by `gradle orientationReport` (").append(photos).append(" photos, seed ").append(seed)
+        b.append("Generated by `gradle orientationReport` (").append(run.describe()).append("; commit ")
+                .append(ReportTool.commit("**/orientation*", "**/misses/**"))
                 .append("); every photo is in `orientation.csv`.\n\n");
         b.append("| step | photos | heading ≤ 0.5° | heading ≤ 2° | median heading error | median FOV error | median pitch error"
                 + " | median roll error | flagged unsure | heading > 5° off and not flagged | median match time |\n");
@@ -544,12 +602,13 @@ public final class OrientationReport {
                         + " matched against (%.0f ppd, %.0f km, no exact distances) took %.1f s for the first scene (GL start"
                         + " included) and median %.1f s afterwards. Warm total per photo: about %.1f s. The CPU reference"
                         + " panoramas that make the photos took median %.1f s each (not part of the cost of a photo).%n",
-                match[0], median(Arrays.copyOfRange(match, 1, match.length)), Arrays.stream(match).max().orElse(0),
+                match[0], median(Arrays.copyOfRange(match, 1, match.length)),
+                Arrays.stream(match).skip(1).max().orElse(Double.NaN),
                 ESTIMATOR_PPD, RANGE_METRES / 1000, gl.get(0), median(glWarm),
                 median(glWarm) + median(Arrays.copyOfRange(match, 1, match.length)),
                 median(ref.stream().mapToDouble(Double::doubleValue).toArray())));
         double[] matchCpu = rows.stream().mapToDouble(Row::cpuSeconds).toArray();
-        double glCpuWarm = median(timing.glCpu().subList(1, timing.glCpu().size()).stream().mapToDouble(Double::doubleValue).toArray());
+        double glCpuWarm = median(glCpu.subList(1, glCpu.size()).stream().mapToDouble(Double::doubleValue).toArray());
         b.append(String.format(Locale.ROOT, "%nCPU time (process, all threads): matching median %.2f s per photo after the"
                         + " first, the OpenGL panorama median %.1f s after the first scene; warm total about %.1f CPU s per"
                         + " photo (2 cores: at least half of it in wall time on an idle machine).%n",
@@ -558,7 +617,7 @@ public final class OrientationReport {
         b.append(String.format(Locale.ROOT, "%nPose draws rejected because the skyline did not cross at least 80 %% of the"
                 + " photo's columns: %d; because the photo showed terrain on a missing tile or within about 1 km of one: %d.%n",
                 rejected.skyline(), rejected.missingData()));
-        b.append(reading(rows, median(glWarm) + median(Arrays.copyOfRange(match, 1, match.length)), photos));
+        b.append(reading(rows, median(glWarm) + median(Arrays.copyOfRange(match, 1, match.length)), run));
         return b.toString();
     }
 
@@ -593,8 +652,8 @@ public final class OrientationReport {
     }
 
     /** The "reading the results" section, written from the numbers (targets of the issue: met or not). */
-    static String reading(List<Row> rows, double warmSeconds, int photos) {
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "%n### Reading the results (%d photos)%n%n", photos));
+    static String reading(List<Row> rows, double warmSeconds, Run run) {
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "%n### Reading the results (%s)%n%n", run.describe()));
         SyntheticPhoto.Step[] steps = SyntheticPhoto.Step.values();
         double clear = shareWithin(rows, steps[0], 0.5), hazy = shareWithin(rows, steps[1], 0.5);
         double occluded = shareWithin(rows, steps[3], 2);
@@ -677,7 +736,7 @@ public final class OrientationReport {
             return;
         }
         int cols = SyntheticPhoto.Step.values().length, rowsN = (images.size() + cols - 1) / cols;
-        int w = PHOTO_W / 2, h = PHOTO_H / 2;
+        int w = PHOTO_W, h = PHOTO_H; // (at half size their captions could not be read)
         BufferedImage grid = new BufferedImage(cols * w, rowsN * h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = grid.createGraphics();
         for (int i = 0; i < images.size(); i++) {

@@ -85,21 +85,32 @@ public final class VoidFillReport {
         }
     }
 
-    public static void main(String[] args) throws IOException {
-        Path dem = Path.of("../shared/dem"), summits = Path.of("../shared/peaks/alps.txt"), out = Path.of("docs");
-        for (int i = 0; i + 1 < args.length; i += 2) {
-            switch (args[i]) {
-                case "--dem" -> dem = Path.of(args[i + 1]);
-                case "--summits" -> summits = Path.of(args[i + 1]);
-                case "--out" -> out = Path.of(args[i + 1]);
-                default -> throw new IllegalArgumentException("unknown argument " + args[i]);
-            }
+    public static void main(String[] args) {
+        System.exit(ReportTool.run(new Command(), args));
+    }
+
+    /** The command line: {@code --dem DIR}, {@code --summits FILE}, {@code --out DIR}. */
+    @picocli.CommandLine.Command(name = "voidFillReport", mixinStandardHelpOptions = true,
+            description = "Compares the void fills against surveyed summits in voids; writes void-fill.md.")
+    static final class Command implements java.util.concurrent.Callable<Integer> {
+        @picocli.CommandLine.Option(names = "--dem", description = "SRTM tiles (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
+        Path dem;
+        @picocli.CommandLine.Option(names = "--summits", description = "Surveyed summits (default: ${DEFAULT-VALUE}).",
+                defaultValue = "../shared/peaks/alps.txt")
+        Path summits;
+        @picocli.CommandLine.Option(names = "--out", description = "Folder for void-fill.md (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
+        Path out;
+
+        @Override
+        public Integer call() throws IOException {
+            Path folder = ReportTool.outputFolder(out);
+            ReportTool.inputs(dem, summits);
+            String md = report(dem, summits);
+            System.out.print(md);
+            dempano.io.AtomicFiles.write(folder.resolve("void-fill.md"), o -> o.write(md.getBytes(StandardCharsets.UTF_8)));
+            System.out.println("wrote " + folder.resolve("void-fill.md"));
+            return 0;
         }
-        String md = report(dem, summits);
-        System.out.print(md);
-        Files.createDirectories(out);
-        Files.writeString(out.resolve("void-fill.md"), md, StandardCharsets.UTF_8);
-        System.out.println("wrote " + out.resolve("void-fill.md"));
     }
 
     static String report(Path demDir, Path summitFile) throws IOException {

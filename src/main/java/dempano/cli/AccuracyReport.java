@@ -45,7 +45,19 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * {@code --scenes sea-2m,provence,summits} (Gradle: {@code -Pscenes=…}) runs only the named scenes, "summits" for the
  * summit section, "terrain" for the void-fill section.
  */
-public final class AccuracyReport {
+@picocli.CommandLine.Command(name = "accuracyReport", mixinStandardHelpOptions = true,
+        description = "Renders the accuracy scenes over a sweep of settings; writes accuracy.md and accuracy.png.")
+public final class AccuracyReport implements java.util.concurrent.Callable<Integer> {
+    @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
+            defaultValue = "../shared")
+    Path shared;
+    @picocli.CommandLine.Option(names = "--out", description = "Folder for accuracy.md and accuracy.png (default: ${DEFAULT-VALUE}).",
+            defaultValue = "docs")
+    Path out;
+    @picocli.CommandLine.Option(names = "--scenes", split = ",", description = "Only these scenes; \"summits\" and \"terrain\""
+            + " for those sections.")
+    List<String> scenesWanted;
+
     /**
      * One scene: a viewpoint in a DEM.
      *
@@ -142,20 +154,16 @@ public final class AccuracyReport {
             new Setting(DepthMode.SHADER_RANGE, 1, 8, 0),
             new Setting(DepthMode.SHADER_RANGE, 1, 8, 2));
 
-    private AccuracyReport() {
+    private AccuracyReport() { // run through main
     }
 
-    public static void main(String[] args) throws IOException {
-        Path shared = Path.of("../shared"), out = Path.of("docs");
-        java.util.Set<String> only = null; // --scenes a,b: only these scenes ("summits", "terrain" for those sections)
-        for (int i = 0; i + 1 < args.length; i += 2) {
-            switch (args[i]) {
-                case "--shared" -> shared = Path.of(args[i + 1]);
-                case "--out" -> out = Path.of(args[i + 1]);
-                case "--scenes" -> only = java.util.Set.of(args[i + 1].split(","));
-                default -> throw new IllegalArgumentException("unknown option " + args[i]);
-            }
-        }
+    public static void main(String[] args) {
+        System.exit(dempano.bench.ReportTool.run(new AccuracyReport(), args));
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        Path shared = this.shared, out = dempano.bench.ReportTool.outputFolder(this.out);
         List<Scene> scenes = new ArrayList<>();
         double[] demo = DemoTerrain.viewpoint();
         scenes.add(new Scene("synthetic", "demo massifs (generated, analytic heights), 60 km",
@@ -178,11 +186,13 @@ public final class AccuracyReport {
         scenes.add(Scene.sea(100, 60_000));
         scenes.add(Scene.sea(2000, 170_000)); // horizon at 160 km
         Scene provence = scenes.stream().filter(sc -> sc.name().equals("provence")).findFirst().orElse(null);
+        List<String> known = new ArrayList<>(scenes.stream().map(Scene::name).toList());
+        known.addAll(List.of("summits", "terrain"));
+        // --scenes a,b: only these scenes ("summits", "terrain" for those sections); null: all
+        java.util.Set<String> only = scenesWanted == null ? null : dempano.bench.ReportTool.subset(scenesWanted, known, "scene");
         if (only != null) {
-            java.util.Set<String> wanted = only;
-            scenes.removeIf(sc -> !wanted.contains(sc.name()));
+            scenes.removeIf(sc -> !only.contains(sc.name()));
         }
-        Files.createDirectories(out);
         long started = System.nanoTime();
         List<Row> rows = new ArrayList<>();
         Map<Scene, Truth> truths = new LinkedHashMap<>();
@@ -222,9 +232,11 @@ public final class AccuracyReport {
             keepAlive.close();
         }
         double totalSeconds = (System.nanoTime() - started) / 1e9;
-        Files.writeString(out.resolve("accuracy.md"), markdown(scenes, rows, truths, glName, totalSeconds) + summitSection + terrainSection,
-                StandardCharsets.UTF_8);
-        System.err.println("accuracyReport: wrote " + out.resolve("accuracy.md") + " and " + out.resolve("accuracy.png"));
+        String md = markdown(scenes, rows, truths, glName, totalSeconds) + summitSection + terrainSection;
+        dempano.io.AtomicFiles.write(out.resolve("accuracy.md"), o -> o.write(md.getBytes(StandardCharsets.UTF_8)));
+        System.err.println("accuracyReport: wrote " + out.resolve("accuracy.md") + (scenes.isEmpty() ? ""
+                : " and " + out.resolve("accuracy.png")));
+        return 0;
     }
 
     /**
@@ -283,8 +295,8 @@ public final class AccuracyReport {
                 ? DistanceComparison.belowHorizon(d, ref, p.widthPx(), HORIZON_ROWS) : List.of();
         double within = scene.sea() ? DistanceComparison.shareWithin(d, ref, p.widthPx(), SEA_TOLERANCE, 1) : Double.NaN;
         Row row = new Row(scene, s, seconds, c, bins, horizon, within);
-        System.err.printf(Locale.ROOT, "%-10s %-40s %6.2f s  median %.2e  p99 %.2e  far>1%% %s  skyline %.3f px%s%n",
-                scene.name(), row.label(), seconds, c.medianRelative(), c.p99Relative(), pct(c.farShareOver1Percent()),
+        System.err.printf(Locale.ROOT, "%-10s %-40s %6.2f s  median %s  p99 %s  far>1%% %s  skyline %.3f px%s%n",
+                scene.name(), row.label(), seconds, pct(c.medianRelative()), pct(c.p99Relative()), pct(c.farShareOver1Percent()),
                 c.skylineMeanAbsPx(), scene.sea() ? "  within 0.1 % " + pct(within) + "  horizon row " + horizonCell(horizon.get(0)) : "");
         return row;
     }
@@ -293,6 +305,7 @@ public final class AccuracyReport {
         StringBuilder b = new StringBuilder();
         b.append("# Accuracy: error against run time\n\n");
         b.append("Generated by `gradle accuracyReport` (class `dempano.cli.AccuracyReport`); do not edit by hand.\n\n");
+        b.append("- Commit ").append(dempano.bench.ReportTool.commit("**/accuracy.md", "**/accuracy.png")).append(".\n");
         b.append("- Machine: ").append(Runtime.getRuntime().availableProcessors()).append(" cores, OpenGL renderer `")
                 .append(glName).append("`, Java ").append(System.getProperty("java.version")).append(".\n");
         b.append(String.format(Locale.ROOT, "- Whole report (every render, the reference's and the summits' included): %.0f s.%n",
@@ -518,7 +531,7 @@ public final class AccuracyReport {
             for (Scene scene : scenes) {
                 XYChart chart = new XYChartBuilder().width(520).height(380)
                         .title(scene.name() + ": " + metric + " relative error").xAxisTitle("render time, s")
-                        .yAxisTitle("relative error").build();
+                        .yAxisTitle("relative error (0 drawn at 1E-9)").build();
                 chart.getStyler().setYAxisLogarithmic(true);
                 chart.getStyler().setYAxisDecimalPattern("0.#E0");
                 chart.getStyler().setChartBackgroundColor(Color.WHITE);
