@@ -206,6 +206,19 @@ public final class SparkBatch {
         long t0 = System.nanoTime();
         settings.hadoop = Hadoop.settings(spark.sparkContext().hadoopConfiguration());
         settings.check();
+        // Paths as the driver means them: an executor resolves a relative one against its own working folder (a relative
+        // --out-dir put every row's files there, lost, while the driver said "ok"; a relative --dem-dir failed every row).
+        settings.outDir = qualified(spark, settings.outDir);
+        List<String> demDirs = new ArrayList<>();
+        for (String d : settings.demDirs) {
+            String dir = Hadoop.isUri(d) ? d : java.nio.file.Path.of(d).toAbsolutePath().normalize().toString();
+            if (!Hadoop.isUri(d) && !java.nio.file.Files.isDirectory(java.nio.file.Path.of(dir))) {
+                System.err.println("dempano-spark: warning: the DEM folder " + dir + " is not on the driver ("
+                        + hostName() + "): every row fails unless it is on every executor's node");
+            }
+            demDirs.add(dir);
+        }
+        settings.demDirs = demDirs;
         // The viewpoint columns present, by their name in the table (matched as dempano batch matches them).
         Map<String, String> known = new LinkedHashMap<>();
         for (String c : table.columns()) {
@@ -275,8 +288,12 @@ public final class SparkBatch {
         org.apache.hadoop.conf.Configuration conf = spark.sparkContext().hadoopConfiguration();
         org.apache.hadoop.fs.Path lock = claim(settings.outDir, conf);
         try {
+            // Written beside the table of the job before, which is replaced only once this one is whole (a job killed
+            // midway left no table at all: the write clears its folder first, and the rendering runs inside it).
+            String writing = settings.outDir.replaceAll("/+$", "") + "/" + RESULTS_WRITING;
             spark.createDataFrame(out, schema).write().mode("overwrite").option("header", "true").option("escape", "\"")
-                    .csv(resultsDir);
+                    .csv(writing);
+            replace(writing, resultsDir, conf);
             Dataset<Row> results = spark.read().option("header", "true").option("escape", "\"").option("multiLine", "true")
                     .csv(resultsDir);
             long total = 0, ok = 0;
@@ -346,6 +363,52 @@ public final class SparkBatch {
             lock.getFileSystem(conf).delete(lock, false);
         } catch (java.io.IOException e) {
             System.err.println("dempano-spark: could not remove " + lock + ": " + e.getMessage() + " (delete it before the next job)");
+        }
+    }
+
+    /** The results table while the job writes it, in the output folder (Hadoop's readers skip names starting with _). */
+    public static final String RESULTS_WRITING = "_results_writing";
+
+    /** Puts the table just written in place of the one before. */
+    private static void replace(String written, String resultsDir, org.apache.hadoop.conf.Configuration conf) {
+        org.apache.hadoop.fs.Path from = new org.apache.hadoop.fs.Path(written), to = new org.apache.hadoop.fs.Path(resultsDir);
+        try {
+            org.apache.hadoop.fs.FileSystem fs = to.getFileSystem(conf);
+            if (fs.exists(to) && !fs.delete(to, true)) {
+                throw new java.io.IOException("cannot remove the table of the job before");
+            }
+            if (!fs.rename(from, to)) {
+                throw new java.io.IOException("cannot rename " + from + " to " + to);
+            }
+        } catch (java.io.IOException e) {
+            throw new OutputFolderException("the results table is in " + written + " but could not be put in place of "
+                    + resultsDir + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * The output folder as the driver means it: a relative path made absolute on the driver's file system (its default
+     * one: the local disk, or HDFS where the cluster sets it), as Spark's own writers resolve it; a local path as a path.
+     */
+    static String qualified(SparkSession spark, String outDir) {
+        if (Hadoop.isUri(outDir)) {
+            return outDir; // a URI's path is absolute (scheme:/…)
+        }
+        org.apache.hadoop.fs.Path p = new org.apache.hadoop.fs.Path(outDir);
+        try {
+            org.apache.hadoop.fs.Path q = p.getFileSystem(spark.sparkContext().hadoopConfiguration()).makeQualified(p);
+            return "file".equals(q.toUri().getScheme()) ? java.nio.file.Path.of(q.toUri()).toString() : q.toString();
+        } catch (java.io.IOException | IllegalArgumentException e) {
+            throw new OutputFolderException("cannot resolve the output folder " + outDir + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** This machine's name, for messages about what is on which node. */
+    static String hostName() {
+        try {
+            return java.net.InetAddress.getLocalHost().getHostName();
+        } catch (java.io.IOException e) {
+            return "this host";
         }
     }
 

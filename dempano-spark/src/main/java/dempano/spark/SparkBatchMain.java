@@ -90,7 +90,7 @@ public final class SparkBatchMain implements Callable<Integer> {
                         + e.getMessage());
                 return 1;
             } catch (Exception e) {
-                System.err.println("dempano-spark: " + oneLine(e));
+                System.err.println("dempano-spark: " + oneLine(e) + missingClassesHint(e));
                 return 1;
             }
             System.err.printf(Locale.ROOT, "dempano-spark: %d ok, %d failed of %d rows in %.1f s (%d tasks, order %s); results in %s%n",
@@ -109,6 +109,25 @@ public final class SparkBatchMain implements Callable<Integer> {
             m += ": " + c.getMessage().strip().split("\\R", 2)[0];
         }
         return m;
+    }
+
+    /**
+     * What a failure that shows the executors lack dempano's classes means, or "": the job started with {@code java -cp}
+     * and no {@code spark.jars} aborts after four attempts a task with a ClassCastException about a SerializedLambda
+     * (or a ClassNotFoundException for a dempano class), which says nothing of the jar.
+     */
+    static String missingClassesHint(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            String m = String.valueOf(t.getMessage());
+            boolean classMissing = (t instanceof ClassNotFoundException || t instanceof NoClassDefFoundError)
+                    && m.replace('/', '.').startsWith("dempano.");
+            if (classMissing || m.contains("cannot assign instance of java.lang.invoke.SerializedLambda")
+                    || m.matches("(?s).*(ClassNotFoundException|NoClassDefFoundError)\\W+dempano[./].*")) {
+                return " (the executors do not have dempano's classes: submit the job jar with spark-submit, which ships it"
+                        + " to them, or list it in spark.jars)";
+            }
+        }
+        return "";
     }
 
     public static void main(String[] args) {

@@ -320,6 +320,51 @@ class SparkBatchTest {
         assertTrue(isFile.getMessage().contains("is a file"), isFile.getMessage());
     }
 
+    /**
+     * Relative --out-dir and --dem-dir are the driver's (on a cluster an executor resolved them against its own working
+     * folder: every row's files lost there, or every row failed); a second job's results table replaces the first's
+     * whole, written beside it until then (a job killed midway left no table at all).
+     */
+    @Test
+    void relativePathsAreTheDriversAndTheResultsTableIsReplacedWhole() throws IOException {
+        Path dem = DemoTerrain.ensure(tmp.resolve("dem"));
+        double[] vp = DemoTerrain.viewpoint();
+        Path cwd = Path.of("").toAbsolutePath();
+        Path out = tmp.resolve("relative-out");
+        String lat = String.format(Locale.ROOT, "%.4f", vp[0]), lon = String.format(Locale.ROOT, "%.4f", vp[1]);
+        for (String ids : new String[] {"first", "second"}) {
+            Path csv = Files.writeString(tmp.resolve(ids + ".csv"), "id,lat,lon\n%s,%s,%s\n".formatted(ids, lat, lon));
+            SparkBatchMain main = new SparkBatchMain();
+            List<String> args = new ArrayList<>(List.of(csv.toString(), "--out-dir", cwd.relativize(out).toString(),
+                    "--dem-dir", cwd.relativize(dem).toString()));
+            args.addAll(List.of(OPTIONS));
+            new CommandLine(main).parseArgs(args.toArray(new String[0]));
+            JobSettings settings = main.settings();
+            SparkBatch.Summary s = SparkBatch.run(spark, SparkBatch.read(spark, csv.toString(), null), settings,
+                    SparkBatch.Order.INPUT, 1, 1);
+            assertEquals(1, s.ok(), s.toString());
+            // What the executors were given: absolute paths.
+            assertEquals(out.toString(), settings.outDir);
+            assertEquals(List.of(dem.toString()), settings.demDirs);
+            assertEquals(List.of(ids), sparkRecords(out).stream().map(r -> r.get("id")).toList(), "the table of this job only");
+            assertTrue(Files.exists(out.resolve(ids + ".json")));
+            assertTrue(!Files.exists(out.resolve(SparkBatch.RESULTS_WRITING)), "nothing left beside the table");
+        }
+        assertEquals(out.toString(), SparkBatch.qualified(spark, cwd.relativize(out).toString()));
+        assertEquals("hdfs://nn:8020/x/out", SparkBatch.qualified(spark, "hdfs://nn:8020/x/out"));
+    }
+
+    @Test
+    void executorsWithoutTheJobJarAreSaidSo() {
+        var stageFailure = new RuntimeException("Job aborted due to stage failure: Task 0 in stage 1.0 failed 4 times: "
+                + "java.lang.ClassCastException: cannot assign instance of java.lang.invoke.SerializedLambda to field "
+                + "org.apache.spark.rdd.MapPartitionsRDD.f");
+        assertTrue(SparkBatchMain.missingClassesHint(stageFailure).contains("submit the job jar with spark-submit"));
+        assertTrue(SparkBatchMain.missingClassesHint(new RuntimeException("wrapped",
+                new ClassNotFoundException("dempano.spark.SparkBatch$RenderPartition"))).contains("spark.jars"));
+        assertEquals("", SparkBatchMain.missingClassesHint(new RuntimeException("Path does not exist: file:/x.csv")));
+    }
+
     /** A DEM folder named by a plain path with URI syntax in it ('%', '[') is that folder (every row failed). */
     @Test
     void aPlainDemPathIsNotReadAsAUri() {
