@@ -89,6 +89,22 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
                 (int) Math.ceil(need / (double) (1L << 30)) + 1);
     }
 
+    /**
+     * The message for the 360° panorama a photo is matched against, needing more than {@code maxHeapBytes}: its grid
+     * is fixed (no --ppd or --elevation-range to lower), so the way out is more memory, or the values given so that
+     * nothing is estimated.
+     *
+     * @param estimated what the match would estimate ("heading, pitch")
+     * @param flags     the flags that give those values
+     */
+    public String matchPanoramaMessage(long maxHeapBytes, String estimated, String flags) {
+        long need = heapBytes();
+        return String.format(Locale.ROOT, "the 360° panorama the photo is matched against (to estimate %s) needs about"
+                        + " %.2f GB of Java heap (%s) but the limit is %.2f GB: give Java more memory, e.g."
+                        + " DEMPANO_OPTS=-Xmx%dg, or give them (%s) so that nothing is estimated",
+                estimated, need / 1e9, breakdown(), maxHeapBytes / 1e9, (int) Math.ceil(need / (double) (1L << 30)) + 1, flags);
+    }
+
     /** Bytes held while the views are stitched. */
     public long stitchingBytes() {
         return (exactDistances ? 19 : 12) * viewPixels + 8 * panoramaPixels;

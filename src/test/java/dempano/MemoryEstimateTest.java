@@ -64,4 +64,15 @@ class MemoryEstimateTest {
         assertTrue(m.contains("DEMPANO_OPTS=-Xmx3g") && m.contains("smaller copy of the photo"), m);
         assertTrue(!m.contains("--width-px") && !m.contains("--ppd"), m);
     }
+
+    @Test
+    void thePanoramaAPhotoIsMatchedAgainstIsAdvisedWhatThePhotoCommandTakes() {
+        MemoryEstimate e = MemoryEstimate.of(PanoramaRequest.at(0, 0).withPixelsPerDegree(10), true, 0);
+        String m = e.matchPanoramaMessage(100L << 20, "heading, pitch", "--heading-deg, --pitch-deg");
+        assertTrue(m.startsWith(String.format(java.util.Locale.ROOT, "the 360° panorama the photo is matched against (to"
+                + " estimate heading, pitch) needs about %.2f GB of Java heap", e.heapBytes() / 1e9)), m);
+        assertTrue(m.contains("but the limit is 0.10 GB: give Java more memory, e.g. DEMPANO_OPTS=-Xmx")
+                && m.endsWith("or give them (--heading-deg, --pitch-deg) so that nothing is estimated"), m);
+        assertTrue(!m.contains("--ppd") && !m.contains("--elevation-range"), m);
+    }
 }

@@ -53,8 +53,9 @@ public final class Ellipsoid {
     }
 
     /**
-     * ECEF to geodetic, accurate to well under a millimetre for heights from -100 km to 1000 km
-     * (Bowring's start and Newton refinement of the parametric latitude).
+     * ECEF to geodetic, accurate to well under a millimetre for heights from -100 km to 1000 km (a fixed-point
+     * iteration of the geodetic latitude on N(φ), started at the latitude of zero height, to 1e-15 rad; the height
+     * from the projection that stays well conditioned at the poles).
      *
      * @return {latDeg, lonDeg, heightMetres}
      */

@@ -211,11 +211,9 @@ public final class PhotoJob {
                         photo, camera, in.ranges().withHeadingRangeDeg(headingRangeDeg));
             } catch (dempano.InsufficientMemoryException e) {
                 // The panorama matched against has a fixed grid: --ppd and --elevation-range are not the photo's to lower.
-                throw new dempano.InsufficientMemoryException("the 360° panorama the photo is matched against (to estimate "
-                        + String.join(", ", open.names()) + ") " + e.getMessage().replaceFirst("^this panorama ", "")
-                        .replaceFirst(": lower the pixels per degree .*?, or give Java more memory", ": give Java more memory")
-                        + ", or give them (" + PhotoOverrides.HEADING + ", " + PhotoOverrides.PITCH + ", " + PhotoOverrides.ROLL
-                        + ", " + PhotoOverrides.HFOV + ") so that nothing is estimated", e.estimate());
+                throw new dempano.InsufficientMemoryException(e.estimate().matchPanoramaMessage(Runtime.getRuntime().maxMemory(),
+                        String.join(", ", open.names()), String.join(", ", PhotoOverrides.HEADING, PhotoOverrides.PITCH,
+                                PhotoOverrides.ROLL, PhotoOverrides.HFOV)), e.estimate());
             } catch (IllegalArgumentException e) {
                 if (tooWideSaysWhy(e, camera) != e) {
                     throw tooWideSaysWhy(e, camera);
