@@ -31,12 +31,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 @picocli.CommandLine.Command(name = "cameraAccuracyReport", mixinStandardHelpOptions = true,
         description = "Renders cameras on three real scenes with OpenGL and the CPU ray cast; writes camera-accuracy.md.")
 public final class CameraAccuracyReport implements java.util.concurrent.Callable<Integer> {
-    @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
-            defaultValue = "../shared")
-    Path shared;
-    @picocli.CommandLine.Option(names = "--out", description = "Folder for camera-accuracy.md/.png (default: ${DEFAULT-VALUE}).",
-            defaultValue = "docs")
-    Path out;
+    @picocli.CommandLine.Mixin
+    ReportTool.SharedOptions io = new ReportTool.SharedOptions();
     @picocli.CommandLine.Option(names = "--size", paramLabel = "WxH", description = "Image size, pixels (default: ${DEFAULT-VALUE}).",
             defaultValue = "600x400")
     String size;
@@ -104,7 +100,7 @@ public final class CameraAccuracyReport implements java.util.concurrent.Callable
     public Integer call() throws IOException {
         int[] wh = size(size);
         int width = wh[0], height = wh[1];
-        Path out = ReportTool.outputFolder(this.out), pictures = Path.of("build/camera-accuracy");
+        Path shared = io.shared, out = ReportTool.outputFolder(io.out), pictures = Path.of("build/camera-accuracy");
         Files.createDirectories(pictures);
         DemDirectory dem = new DemDirectory(shared.resolve("dem"));
         List<Row> rows = new ArrayList<>();

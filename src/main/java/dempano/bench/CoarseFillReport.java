@@ -45,20 +45,15 @@ public final class CoarseFillReport {
     @picocli.CommandLine.Command(name = "coarseFillReport", mixinStandardHelpOptions = true,
             description = "Fills held-out voids of N46E008 from a 30\u2033 average of it; writes coarse-fill.md.")
     static final class Command implements java.util.concurrent.Callable<Integer> {
-        @picocli.CommandLine.Option(names = "--dem", description = "SRTM tiles (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
-        Path dem;
-        @picocli.CommandLine.Option(names = "--summits", description = "Surveyed summits (default: ${DEFAULT-VALUE}).",
-                defaultValue = "../shared/peaks/alps.txt")
-        Path summits;
-        @picocli.CommandLine.Option(names = "--out", description = "Folder for coarse-fill.md (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
-        Path out;
+        @picocli.CommandLine.Mixin
+        ReportTool.FillOptions o = new ReportTool.FillOptions();
 
         @Override
         public Integer call() throws Exception {
-            Path folder = ReportTool.outputFolder(out);
-            ReportTool.inputs(dem.resolve("N46E008.hgt"), summits);
-            String md = report(dem.resolve("N46E008.hgt"), summits);
-            dempano.io.AtomicFiles.write(folder.resolve("coarse-fill.md"), o -> o.write(md.getBytes(StandardCharsets.UTF_8)));
+            Path folder = ReportTool.outputFolder(o.out);
+            ReportTool.inputs(o.dem.resolve("N46E008.hgt"), o.summits);
+            String md = report(o.dem.resolve("N46E008.hgt"), o.summits);
+            dempano.io.AtomicFiles.write(folder.resolve("coarse-fill.md"), w -> w.write(md.getBytes(StandardCharsets.UTF_8)));
             System.out.print(md);
             return 0;
         }

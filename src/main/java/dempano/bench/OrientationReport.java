@@ -47,11 +47,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 @picocli.CommandLine.Command(name = "orientationReport", mixinStandardHelpOptions = true,
         description = "Orients synthetic photos (CPU reference renders of ../shared scenes); writes orientation.md.")
 public final class OrientationReport implements java.util.concurrent.Callable<Integer> {
-    @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
-            defaultValue = "../shared")
-    Path shared;
-    @picocli.CommandLine.Option(names = "--out", description = "Folder for the report (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
-    Path out;
+    @picocli.CommandLine.Mixin
+    ReportTool.SharedOptions io = new ReportTool.SharedOptions();
     @picocli.CommandLine.Option(names = "--photos", description = "Photos, spread over the scenes (default: ${DEFAULT-VALUE}).",
             defaultValue = "100")
     int photos;
@@ -249,7 +246,7 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
         FINE = fine;
         STEPS = steps;
         ALTITUDE_TEST_METRES = altitudeTestMetres;
-        Path out = ReportTool.outputFolder(this.out);
+        Path shared = io.shared, out = ReportTool.outputFolder(io.out);
         ReportTool.inputs(shared.resolve("dem"));
         DemDirectory dem = new DemDirectory(shared.resolve("dem"));
         List<Row> rows = new ArrayList<>();

@@ -16,6 +16,29 @@ public final class ReportTool {
     private ReportTool() {
     }
 
+    /** {@code --shared DIR} and {@code --out DIR}, as the reports over the shared material take them (a picocli mixin). */
+    public static final class SharedOptions {
+        @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
+                defaultValue = "../shared")
+        public Path shared;
+        @picocli.CommandLine.Option(names = "--out", description = "Folder for the report's files (default: ${DEFAULT-VALUE}).",
+                defaultValue = "docs")
+        public Path out;
+    }
+
+    /** {@code --dem DIR}, {@code --summits FILE} and {@code --out DIR} of the void-fill reports (a picocli mixin). */
+    public static final class FillOptions {
+        @picocli.CommandLine.Option(names = "--dem", description = "SRTM tiles (default: ${DEFAULT-VALUE}).",
+                defaultValue = "../shared/dem")
+        public Path dem;
+        @picocli.CommandLine.Option(names = "--summits", description = "Surveyed summits (default: ${DEFAULT-VALUE}).",
+                defaultValue = "../shared/peaks/alps.txt")
+        public Path summits;
+        @picocli.CommandLine.Option(names = "--out", description = "Folder for the report (default: ${DEFAULT-VALUE}).",
+                defaultValue = "docs")
+        public Path out;
+    }
+
     /**
      * Runs a picocli command: its own messages for unknown options and unparsable values, and an
      * {@link IllegalArgumentException} or {@link IOException} from the command as one line, "NAME: message", exit 2

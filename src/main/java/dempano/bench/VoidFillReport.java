@@ -93,21 +93,16 @@ public final class VoidFillReport {
     @picocli.CommandLine.Command(name = "voidFillReport", mixinStandardHelpOptions = true,
             description = "Compares the void fills against surveyed summits in voids; writes void-fill.md.")
     static final class Command implements java.util.concurrent.Callable<Integer> {
-        @picocli.CommandLine.Option(names = "--dem", description = "SRTM tiles (default: ${DEFAULT-VALUE}).", defaultValue = "../shared/dem")
-        Path dem;
-        @picocli.CommandLine.Option(names = "--summits", description = "Surveyed summits (default: ${DEFAULT-VALUE}).",
-                defaultValue = "../shared/peaks/alps.txt")
-        Path summits;
-        @picocli.CommandLine.Option(names = "--out", description = "Folder for void-fill.md (default: ${DEFAULT-VALUE}).", defaultValue = "docs")
-        Path out;
+        @picocli.CommandLine.Mixin
+        ReportTool.FillOptions o = new ReportTool.FillOptions();
 
         @Override
         public Integer call() throws IOException {
-            Path folder = ReportTool.outputFolder(out);
-            ReportTool.inputs(dem, summits);
-            String md = report(dem, summits);
+            Path folder = ReportTool.outputFolder(o.out);
+            ReportTool.inputs(o.dem, o.summits);
+            String md = report(o.dem, o.summits);
             System.out.print(md);
-            dempano.io.AtomicFiles.write(folder.resolve("void-fill.md"), o -> o.write(md.getBytes(StandardCharsets.UTF_8)));
+            dempano.io.AtomicFiles.write(folder.resolve("void-fill.md"), w -> w.write(md.getBytes(StandardCharsets.UTF_8)));
             System.out.println("wrote " + folder.resolve("void-fill.md"));
             return 0;
         }

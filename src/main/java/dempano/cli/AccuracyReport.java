@@ -48,12 +48,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 @picocli.CommandLine.Command(name = "accuracyReport", mixinStandardHelpOptions = true,
         description = "Renders the accuracy scenes over a sweep of settings; writes accuracy.md and accuracy.png.")
 public final class AccuracyReport implements java.util.concurrent.Callable<Integer> {
-    @picocli.CommandLine.Option(names = "--shared", description = "The shared material folder (default: ${DEFAULT-VALUE}).",
-            defaultValue = "../shared")
-    Path shared;
-    @picocli.CommandLine.Option(names = "--out", description = "Folder for accuracy.md and accuracy.png (default: ${DEFAULT-VALUE}).",
-            defaultValue = "docs")
-    Path out;
+    @picocli.CommandLine.Mixin
+    dempano.bench.ReportTool.SharedOptions io = new dempano.bench.ReportTool.SharedOptions();
     @picocli.CommandLine.Option(names = "--scenes", split = ",", description = "Only these scenes; \"summits\" and \"terrain\""
             + " for those sections.")
     List<String> scenesWanted;
@@ -163,7 +159,7 @@ public final class AccuracyReport implements java.util.concurrent.Callable<Integ
 
     @Override
     public Integer call() throws IOException {
-        Path shared = this.shared, out = dempano.bench.ReportTool.outputFolder(this.out);
+        Path shared = io.shared, out = dempano.bench.ReportTool.outputFolder(io.out);
         List<Scene> scenes = new ArrayList<>();
         double[] demo = DemoTerrain.viewpoint();
         scenes.add(new Scene("synthetic", "demo massifs (generated, analytic heights), 60 km",
