@@ -64,16 +64,12 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
      * @throws InsufficientMemoryException with the figures and the way out
      */
     public void checkCamera(long maxHeapBytes) {
-        long need = heapBytes();
-        if (need <= maxHeapBytes) {
+        if (heapBytes() <= maxHeapBytes) {
             return;
         }
-        throw new InsufficientMemoryException(String.format(Locale.ROOT,
-                "this camera view needs about %.2f GB of Java heap (%s) but the limit is %.2f GB: render a smaller image"
-                        + " (--width-px/--height-px, the intrinsics scaled with it; half the width and height needs a"
-                        + " quarter), or give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg",
-                need / 1e9, breakdown().replace("panorama pixels", "photo pixels"), maxHeapBytes / 1e9,
-                (int) Math.ceil(need / (double) (1L << 30)) + 1), this);
+        throw new InsufficientMemoryException(needs("this camera view", maxHeapBytes, true) + ": render a smaller image"
+                + " (--width-px/--height-px, the intrinsics scaled with it; half the width and height needs a quarter), or"
+                + " give Java more memory, e.g. " + heapOption(), this);
     }
 
     /**
@@ -81,12 +77,8 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
      * the way out is more memory or a smaller copy of the photo (no flag sets it).
      */
     public String photoMessage(long maxHeapBytes) {
-        long need = heapBytes();
-        return String.format(Locale.ROOT, "the photo's view needs about %.2f GB of Java heap (%s) but the limit is %.2f GB:"
-                        + " give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg, or render a smaller copy of the photo (half"
-                        + " the width and height needs a quarter)",
-                need / 1e9, breakdown().replace("panorama pixels", "photo pixels"), maxHeapBytes / 1e9,
-                (int) Math.ceil(need / (double) (1L << 30)) + 1);
+        return needs("the photo's view", maxHeapBytes, true) + ": give Java more memory, e.g. " + heapOption()
+                + ", or render a smaller copy of the photo (half the width and height needs a quarter)";
     }
 
     /**
@@ -98,11 +90,20 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
      * @param flags     the flags that give those values
      */
     public String matchPanoramaMessage(long maxHeapBytes, String estimated, String flags) {
-        long need = heapBytes();
-        return String.format(Locale.ROOT, "the 360° panorama the photo is matched against (to estimate %s) needs about"
-                        + " %.2f GB of Java heap (%s) but the limit is %.2f GB: give Java more memory, e.g."
-                        + " DEMPANO_OPTS=-Xmx%dg, or give them (%s) so that nothing is estimated",
-                estimated, need / 1e9, breakdown(), maxHeapBytes / 1e9, (int) Math.ceil(need / (double) (1L << 30)) + 1, flags);
+        return needs("the 360° panorama the photo is matched against (to estimate " + estimated + ")", maxHeapBytes, false)
+                + ": give Java more memory, e.g. " + heapOption() + ", or give them (" + flags + ") so that nothing is estimated";
+    }
+
+    /** "WHAT needs about 1.53 GB of Java heap (BREAKDOWN) but the limit is 0.42 GB"; a camera's pixels as photo pixels. */
+    private String needs(String what, long maxHeapBytes, boolean camera) {
+        String breakdown = camera ? breakdown().replace("panorama pixels", "photo pixels") : breakdown();
+        return String.format(Locale.ROOT, "%s needs about %.2f GB of Java heap (%s) but the limit is %.2f GB", what,
+                heapBytes() / 1e9, breakdown, maxHeapBytes / 1e9);
+    }
+
+    /** The JVM option that would fit it: a whole number of GiB with one to spare, e.g. "DEMPANO_OPTS=-Xmx3g". */
+    private String heapOption() {
+        return "DEMPANO_OPTS=-Xmx" + ((int) Math.ceil(heapBytes() / (double) (1L << 30)) + 1) + "g";
     }
 
     /** Bytes held while the views are stitched. */
@@ -126,15 +127,12 @@ public record MemoryEstimate(long viewPixels, long panoramaPixels, int layers, l
      * @throws InsufficientMemoryException with the figures and the way out
      */
     public void check(long maxHeapBytes) {
-        long need = heapBytes();
-        if (need <= maxHeapBytes) {
+        if (heapBytes() <= maxHeapBytes) {
             return;
         }
-        throw new InsufficientMemoryException(String.format(Locale.ROOT,
-                "this panorama needs about %.2f GB of Java heap (%s) but the limit is %.2f GB: lower the pixels per "
-                        + "degree (--ppd; half the ppd needs a quarter) or the elevation range (--elevation-range), or "
-                        + "give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg",
-                need / 1e9, breakdown(), maxHeapBytes / 1e9, (int) Math.ceil(need / (double) (1L << 30)) + 1), this);
+        throw new InsufficientMemoryException(needs("this panorama", maxHeapBytes, false) + ": lower the pixels per degree"
+                + " (--ppd; half the ppd needs a quarter) or the elevation range (--elevation-range), or give Java more"
+                + " memory, e.g. " + heapOption(), this);
     }
 
     private String breakdown() {

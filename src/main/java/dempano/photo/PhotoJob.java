@@ -190,7 +190,7 @@ public final class PhotoJob {
         if (open.any() && !open.hfov()) {
             // A known field of view too wide to render fails now, not after seconds of estimating (level, as placed).
             try {
-                dempano.panorama.ViewLayout.forTarget(CameraRequest.of(camera).view(), settings.supersampling());
+                dempano.panorama.ViewLayout.checkCoverable(CameraRequest.of(camera).view(), settings.supersampling());
             } catch (IllegalArgumentException e) {
                 throw tooWideSaysWhy(e, camera);
             }
@@ -215,8 +215,9 @@ public final class PhotoJob {
                         String.join(", ", open.names()), String.join(", ", PhotoOverrides.HEADING, PhotoOverrides.PITCH,
                                 PhotoOverrides.ROLL, PhotoOverrides.HFOV)), e.estimate());
             } catch (IllegalArgumentException e) {
-                if (tooWideSaysWhy(e, camera) != e) {
-                    throw tooWideSaysWhy(e, camera);
+                IllegalArgumentException tooWide = tooWideSaysWhy(e, camera);
+                if (tooWide != e) {
+                    throw tooWide;
                 }
                 List<String> missing = meta.missing(given);
                 throw new IllegalArgumentException("could not estimate the " + String.join(", ", open.names())

@@ -118,5 +118,12 @@ class ViewLayoutTargetTest {
         CameraView fisheye = new CameraView(CameraIntrinsics.fromHorizontalFov(400, 400, 170), new CameraOrientation(0, 0, 0));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ViewLayout.forTarget(fisheye, 1));
         assertTrue(e.getMessage().contains("too wide"), e.getMessage());
+        // The cheap check (a 64-step grid, edges included) refuses it with the same message, and passes a 24 MP photo's
+        // 60° view, as the full layout does.
+        IllegalArgumentException cheap = assertThrows(IllegalArgumentException.class, () -> ViewLayout.checkCoverable(fisheye, 1));
+        assertTrue(cheap.getMessage().startsWith(ViewLayout.TOO_WIDE), cheap.getMessage());
+        CameraView photo = new CameraView(CameraIntrinsics.fromHorizontalFov(6000, 4000, 60), new CameraOrientation(10, -5, 3));
+        ViewLayout.checkCoverable(photo, 1);
+        ViewLayout.forTarget(photo, 1);
     }
 }

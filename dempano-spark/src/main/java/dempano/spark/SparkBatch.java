@@ -211,12 +211,16 @@ public final class SparkBatch {
         settings.outDir = qualified(spark, settings.outDir);
         List<String> demDirs = new ArrayList<>();
         for (String d : settings.demDirs) {
-            String dir = Hadoop.isUri(d) ? d : java.nio.file.Path.of(d).toAbsolutePath().normalize().toString();
-            if (!Hadoop.isUri(d) && !java.nio.file.Files.isDirectory(java.nio.file.Path.of(dir))) {
+            if (Hadoop.isUri(d)) {
+                demDirs.add(d);
+                continue;
+            }
+            java.nio.file.Path dir = java.nio.file.Path.of(d).toAbsolutePath().normalize();
+            if (!java.nio.file.Files.isDirectory(dir)) {
                 System.err.println("dempano-spark: warning: the DEM folder " + dir + " is not on the driver ("
                         + hostName() + "): every row fails unless it is on every executor's node");
             }
-            demDirs.add(dir);
+            demDirs.add(dir.toString());
         }
         settings.demDirs = demDirs;
         // The viewpoint columns present, by their name in the table (matched as dempano batch matches them).
