@@ -392,14 +392,30 @@ public final class Mosaic {
         return cols;
     }
 
-    /** Latitude of a grid row, degrees. */
+    /**
+     * Latitude of a grid row, degrees. For a whole row the same bits whatever block the mosaic covers: one rounding
+     * of an exact quotient (whole sample intervals from the equator over intervals per degree), so that a sample
+     * placed from two mosaics (two viewpoints of a batch, a cached mesh and this render's probe) is placed alike.
+     * ({@code north − row / n}, two roundings, gave another last bit for another north edge.)
+     */
     public double latOfRow(double row) {
-        return latNorthDeg() - row / intervalsPerDegree;
+        return ((double) latNorthDeg() * intervalsPerDegree - row) / intervalsPerDegree;
     }
 
-    /** Unwrapped longitude of a grid column, degrees. */
+    /** Unwrapped longitude of a grid column, degrees; for a whole column one rounding, as {@link #latOfRow}. */
     public double lonOfCol(double col) {
-        return lonWestDeg + col / intervalsPerDegree;
+        return ((double) lonWestDeg * intervalsPerDegree + col) / intervalsPerDegree;
+    }
+
+    /**
+     * Longitude of a grid column wrapped into [−180°, 180°), degrees: the same bits for the same meridian whatever
+     * the mosaic, also across the antimeridian (where {@link #lonOfCol} is 181° in one block and −179° in another).
+     * For trigonometry.
+     */
+    public double wrappedLonOfCol(int col) {
+        long n = intervalsPerDegree;
+        long east = Math.floorMod(lonWestDeg * n + col + 180 * n, 360 * n);
+        return (double) (east - 180 * n) / n;
     }
 
     /** Fractional grid row of a latitude. */

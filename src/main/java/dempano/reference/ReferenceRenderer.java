@@ -102,7 +102,7 @@ public final class ReferenceRenderer {
             sinLon = new double[cols];
             cosLon = new double[cols];
             for (int c = 0; c < cols; c++) {
-                double lam = Math.toRadians(mosaic.lonOfCol(c));
+                double lam = Math.toRadians(mosaic.wrappedLonOfCol(c));
                 sinLon[c] = Math.sin(lam);
                 cosLon[c] = Math.cos(lam);
             }

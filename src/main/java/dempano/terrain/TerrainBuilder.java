@@ -256,7 +256,7 @@ public final class TerrainBuilder {
             cosLat[r] = Math.cos(phi);
         }
         for (int c = 0; c < nc; c++) {
-            double lam = Math.toRadians(mosaic.lonOfCol(clampCol(mosaic, c0 + c)));
+            double lam = Math.toRadians(mosaic.wrappedLonOfCol(clampCol(mosaic, c0 + c)));
             sinLon[c] = Math.sin(lam);
             cosLon[c] = Math.cos(lam);
         }

@@ -194,4 +194,70 @@ class MosaicTest {
         assertThrows(IllegalArgumentException.class, () -> Mosaic.around(dem, 46, 8, -5, MissingTilePolicy.SEA_LEVEL));
         assertThrows(IllegalArgumentException.class, () -> Mosaic.around(dem, 89.5, 8, 100_000, MissingTilePolicy.SEA_LEVEL));
     }
+
+    /**
+     * The same sample has the same coordinates, to the bit, in mosaics of different blocks: a mesh cached from one
+     * viewpoint's mosaic and drawn for another's, and the probe placing this render's triangles, must agree (they
+     * did not: a batch's distances depended on the rows rendered before, one float step in a pixel).
+     */
+    @ParameterizedTest
+    @CsvSource({
+            "44, -72, 1, 1, 43, -73, 3, 2", // New England: north edges 45° and 46°, west edges 72°W and 73°W
+            "-17, 166, 1, 1, -18, 165, 3, 2",
+            "10, 178, 1, 2, 9, 179, 3, 2",  // across the antimeridian: 180°-181° unwrapped in one block, in both
+    })
+    void aSampleHasTheSameCoordinatesInEveryMosaicThatHoldsIt(int latS, int lonW, int ns, int ew, int latS2, int lonW2,
+                                                             int ns2, int ew2) {
+        // SRTM3's 1200 intervals a degree: at 120 the old rounding happened to agree.
+        Mosaic a = Mosaic.of(flatBlock(latS, lonW, ns, ew), new TileSelection(latS, lonW, ns, ew, all(ns, ew)),
+                MissingTilePolicy.ERROR);
+        Mosaic b = Mosaic.of(flatBlock(latS2, lonW2, ns2, ew2), new TileSelection(latS2, lonW2, ns2, ew2, all(ns2, ew2)),
+                MissingTilePolicy.ERROR);
+        int compared = 0;
+        for (int r = 0; r < a.rows(); r++) {
+            int rb = r + (b.latNorthDeg() - a.latNorthDeg()) * 1200;
+            if (rb < 0 || rb >= b.rows()) {
+                continue;
+            }
+            assertEquals(Double.doubleToLongBits(a.latOfRow(r)), Double.doubleToLongBits(b.latOfRow(rb)), "row " + r);
+            compared++;
+        }
+        for (int c = 0; c < a.cols(); c++) {
+            int shift = Math.floorMod(a.lonWestDeg() - b.lonWestDeg() + 180, 360) - 180;
+            int cb = c + shift * 1200;
+            if (cb < 0 || cb >= b.cols()) {
+                continue;
+            }
+            assertEquals(Double.doubleToLongBits(a.wrappedLonOfCol(c)), Double.doubleToLongBits(b.wrappedLonOfCol(cb)),
+                    "col " + c);
+            if (a.lonWestDeg() * 1200L + c == b.lonWestDeg() * 1200L + cb) { // unwrapped alike: the same bits too
+                assertEquals(Double.doubleToLongBits(a.lonOfCol(c)), Double.doubleToLongBits(b.lonOfCol(cb)), "col " + c);
+            }
+            double wrapped = a.wrappedLonOfCol(c);
+            assertTrue(wrapped >= -180 && wrapped < 180, "col " + c + ": " + wrapped);
+            assertEquals(TileSelection.wrap180(a.lonOfCol(c)), wrapped, 1e-12, "col " + c);
+            compared++;
+        }
+        assertTrue(compared > 200, "compared " + compared);
+    }
+
+    private static DemSource flatBlock(int latS, int lonW, int ns, int ew) {
+        List<HgtTile> tiles = new ArrayList<>();
+        for (int i = 0; i < ns; i++) {
+            for (int j = 0; j < ew; j++) {
+                float[] h = new float[1201 * 1201];
+                java.util.Arrays.fill(h, 100);
+                tiles.add(HgtTile.of(TileId.of(latS + i, lonW + j), 1201, h, "flat"));
+            }
+        }
+        return new InMemoryDem("flat", tiles);
+    }
+
+    private static boolean[][] all(int ns, int ew) {
+        boolean[][] present = new boolean[ns][ew];
+        for (boolean[] row : present) {
+            java.util.Arrays.fill(row, true);
+        }
+        return present;
+    }
 }
