@@ -276,7 +276,12 @@ public final class CameraWriter {
         eye.put("latDeg", m.latDeg());
         eye.put("lonDeg", m.lonDeg());
         eye.put("groundElevationMetres", m.groundElevationMetres());
+        eye.put("standingAltitudeMetres", m.standingAltitudeMetres());
+        eye.put("eyeHeightMetres", m.eyeHeightMetres());
         eye.put("eyeAltitudeMetres", m.eyeAltitudeMetres());
+        if (m.viewpointMove() != null) {
+            eye.put("moved", PanoramaWriter.movedJson(m.viewpointMove()));
+        }
         doc.put("eye", eye);
         Map<String, String> conventions = new LinkedHashMap<>();
         conventions.put("pixels", "OpenCV: pixel (column i, row j) has its centre at (i, j); row 0 at the top; the photo"
@@ -291,17 +296,7 @@ public final class CameraWriter {
         conventions.put("distance", "metres, float32, straight line from the eye to the terrain seen through the"
                 + " pixel centre; sky = +Infinity; NaN where the lens model has no ray");
         doc.put("conventions", conventions);
-        doc.put("earthModel", PanoramaMetadata.EARTH_MODEL);
-        doc.put("refractionCoefficient", m.refractionCoefficient());
-        doc.put("rangeMetres", m.rangeMetres());
-        doc.put("depthMode", m.depthMode().optionName());
-        doc.put("views", m.views());
-        doc.put("viewSizePx", List.of(m.viewWidthPx(), m.viewHeightPx()));
-        doc.put("tilesUsed", m.tilesUsed());
-        doc.put("tilesMissing", m.tilesMissing());
-        doc.put("warnings", m.warnings());
-        doc.put("timingsMillis", m.timingsMillis());
-        doc.put("glRenderer", m.glRenderer());
+        PanoramaWriter.putRendering(doc, m);
         doc.put("provenance", provenance);
         List<String> names = new ArrayList<>();
         files.forEach(f -> names.add(f.getFileName().toString()));

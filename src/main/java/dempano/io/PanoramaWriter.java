@@ -162,19 +162,8 @@ public final class PanoramaWriter {
         vp.put("standingAltitudeMetres", m.standingAltitudeMetres());
         vp.put("eyeHeightMetres", m.eyeHeightMetres());
         vp.put("eyeAltitudeMetres", m.eyeAltitudeMetres());
-        dempano.geo.ViewpointMove mv = m.viewpointMove();
-        if (mv != null) {
-            Map<String, Object> moved = new LinkedHashMap<>();
-            moved.put("fromLatDeg", mv.fromLatDeg());
-            moved.put("fromLonDeg", mv.fromLonDeg());
-            moved.put("fromEyeAltitudeMetres", mv.fromEyeAltitudeMetres());
-            moved.put("toLatDeg", mv.toLatDeg());
-            moved.put("toLonDeg", mv.toLonDeg());
-            moved.put("toEyeAltitudeMetres", mv.toEyeAltitudeMetres());
-            moved.put("horizontalShiftMetres", mv.shiftMetres());
-            moved.put("liftMetres", mv.liftMetres());
-            moved.put("reason", mv.reason());
-            vp.put("moved", moved);
+        if (m.viewpointMove() != null) {
+            vp.put("moved", movedJson(m.viewpointMove()));
         }
         doc.put("viewpoint", vp);
         Map<String, Object> grid = new LinkedHashMap<>();
@@ -185,6 +174,37 @@ public final class PanoramaWriter {
         grid.put("elevationOfRow0TopEdgeDeg", g.topElevationDeg());
         grid.put("pixelCentre", "azimuth = (col + 0.5)/ppd clockwise from true north; elevation = top - (row + 0.5)/ppd");
         doc.put("grid", grid);
+        doc.put("distanceUnits", p.hasDistance() ? "metres, float32, straight line from the eye; sky = +Infinity"
+                : "not rendered (colour only)");
+        putRendering(doc, m);
+        List<String> names = new ArrayList<>();
+        files.forEach(f -> names.add(f.getFileName().toString()));
+        doc.put("files", names);
+        Gson gson = Json.writer();
+        return gson.toJson(doc) + "\n";
+    }
+
+    /** {@code viewpoint.moved} (a panorama's) or {@code eye.moved} (a camera's): where the corrections moved the eye. */
+    static Map<String, Object> movedJson(dempano.geo.ViewpointMove mv) {
+        Map<String, Object> moved = new LinkedHashMap<>();
+        moved.put("fromLatDeg", mv.fromLatDeg());
+        moved.put("fromLonDeg", mv.fromLonDeg());
+        moved.put("fromEyeAltitudeMetres", mv.fromEyeAltitudeMetres());
+        moved.put("toLatDeg", mv.toLatDeg());
+        moved.put("toLonDeg", mv.toLonDeg());
+        moved.put("toEyeAltitudeMetres", mv.toEyeAltitudeMetres());
+        moved.put("horizontalShiftMetres", mv.shiftMetres());
+        moved.put("liftMetres", mv.liftMetres());
+        moved.put("reason", mv.reason());
+        return moved;
+    }
+
+    /**
+     * The fields a panorama's and a camera's {@code P.json} share, one writer for both (two had drifted apart: the
+     * camera's lacked the DEM sources and the near and far planes, neither wrote the level of detail's bound): the
+     * earth and the drawing, the tiles and the sources of their samples, warnings, timings and the GL renderer.
+     */
+    static void putRendering(Map<String, Object> doc, PanoramaMetadata m) {
         doc.put("earthModel", PanoramaMetadata.EARTH_MODEL);
         doc.put("refractionCoefficient", m.refractionCoefficient());
         doc.put("rangeMetres", m.rangeMetres());
@@ -193,8 +213,8 @@ public final class PanoramaWriter {
         doc.put("farMetres", Double.isInfinite(m.farMetres()) ? "infinite" : m.farMetres());
         doc.put("views", m.views());
         doc.put("viewSizePx", List.of(m.viewWidthPx(), m.viewHeightPx()));
-        doc.put("distanceUnits", p.hasDistance() ? "metres, float32, straight line from the eye; sky = +Infinity"
-                : "not rendered (colour only)");
+        doc.put("lodErrorPx", m.lodErrorPx());
+        doc.put("terrainTriangles", m.terrainTriangles());
         doc.put("tilesUsed", m.tilesUsed());
         doc.put("tilesMissing", m.tilesMissing());
         List<Map<String, Object>> sources = new ArrayList<>();
@@ -210,10 +230,5 @@ public final class PanoramaWriter {
         doc.put("warnings", m.warnings());
         doc.put("timingsMillis", m.timingsMillis());
         doc.put("glRenderer", m.glRenderer());
-        List<String> names = new ArrayList<>();
-        files.forEach(f -> names.add(f.getFileName().toString()));
-        doc.put("files", names);
-        Gson gson = Json.writer();
-        return gson.toJson(doc) + "\n";
     }
 }

@@ -88,6 +88,14 @@ class PhotoCliTest {
         String json = Files.readString(Path.of(prefix + ".json"));
         assertTrue(json.contains("\"width\": " + w) && json.contains("\"height\": " + h), json);
         assertTrue(json.contains("\"conventions\"") && json.contains("N46E008"), json);
+        // The fields a panorama's P.json has too (the camera's had drifted: no DEM sources, near plane or bound).
+        com.google.gson.JsonObject doc = com.google.gson.JsonParser.parseString(json).getAsJsonObject();
+        com.google.gson.JsonObject source = doc.getAsJsonArray("demSources").get(0).getAsJsonObject();
+        assertEquals("N46E008", source.get("tile").getAsString(), json);
+        assertEquals("EGM96", source.get("verticalDatum").getAsString(), json);
+        assertTrue(doc.get("nearMetres").getAsDouble() > 0 && doc.get("terrainTriangles").getAsLong() > 0, json);
+        assertEquals(dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, doc.get("lodErrorPx").getAsDouble(), 0, json);
+        assertTrue(doc.getAsJsonObject("eye").has("eyeHeightMetres"), json);
     }
 
     /**

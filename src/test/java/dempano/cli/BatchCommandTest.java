@@ -145,6 +145,10 @@ class BatchCommandTest {
         assertTrue(results.get(3).startsWith("north,ok,"), results.get(3));
         assertTrue(results.get(4).startsWith("south,ok,"), results.get(4));
         assertEquals(5, results.size());
+        com.google.gson.JsonObject json = com.google.gson.JsonParser.parseString(Files.readString(out.resolve("here.json")))
+                .getAsJsonObject();
+        assertEquals(dempano.terrain.LevelOfDetail.DEFAULT_MAX_ERROR_PX, json.get("lodErrorPx").getAsDouble(), 0);
+        assertTrue(json.get("terrainTriangles").getAsLong() > 0, json.toString());
 
         // The same viewpoint rendered by the single-panorama command: the same distance file, byte for byte.
         List<String> single = new ArrayList<>(List.of("--lat", coordinate(vp[0] + 0.04), "--lon", lon, "--eye-height-m", "20",

@@ -103,6 +103,9 @@ class OutputFilesCliTest {
         assertEquals(Set.of("p.png", "p-distance.npy", "p-distance.png", "p.json"), names(out),
                 "the old set's layer and summit files went with it");
         assertEquals(3 * 360, width(out));
+        JsonObject json = JsonParser.parseString(Files.readString(out.resolve("p.json"))).getAsJsonObject();
+        assertEquals(0, json.get("terrainTriangles").getAsLong(), "the CPU reference draws no triangles");
+        assertEquals(0, json.get("lodErrorPx").getAsDouble(), "and intersects the full-resolution surface");
         assertEquals(3 * 360, javax.imageio.ImageIO.read(out.resolve("p.png").toFile()).getWidth());
 
         Path reference = Files.createFile(d.resolve("made-by-any-program"));
