@@ -331,7 +331,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         List<String> undecided = result.undecided() == 0 ? List.of() : List.of(result.undecided()
                 + " rays could not be decided (the eye inside the terrain?): NaN in the distances");
         return finishCamera(request, scene, new Images(result.argb(), result.distanceMetres()),
-                new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), clock, progress, undecided);
+                new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, Double.NaN, 0, 0), clock, progress, undecided);
     }
 
     /** {@link #render(CameraRequest, Consumer)} without progress reports. */
@@ -681,11 +681,12 @@ public final class PanoramaRenderer implements AutoCloseable {
                 req.rangeMetres(), geometry, req.colour());
         clock.lap("render");
         return finish(req, scene, geometry, new Images(result.argb(), result.distanceMetres()),
-                new Drawing(req.views(), 0, 0, Double.POSITIVE_INFINITY, 0, 0, 0), clock, progress);
+                new Drawing(0, 0, 0, Double.POSITIVE_INFINITY, Double.NaN, 0, 0), clock, progress);
     }
 
     /**
-     * How the views were drawn, for the metadata (zeros and an infinite far plane for the CPU reference).
+     * How the views were drawn, for the metadata (for the CPU reference: no views, no near plane (NaN), an infinite far
+     * plane, the full-resolution surface (bound 0) and no triangles).
      *
      * @param farMetres far plane that bounds distances (infinite unless the depth mode has one)
      */

@@ -16,9 +16,9 @@ import java.util.Map;
  * @param rangeMetres           range of sight, metres
  * @param refractionCoefficient k
  * @param depthMode             how distances were obtained
- * @param nearMetres            near plane
+ * @param nearMetres            near plane, metres (NaN for the CPU reference, which has none)
  * @param farMetres             far plane (STANDARD_24) / culling distance
- * @param views                 number of perspective views
+ * @param views                 number of perspective views drawn (0 for the CPU reference)
  * @param viewWidthPx           view width
  * @param viewHeightPx          view height
  * @param tilesUsed             tile names read

@@ -106,6 +106,8 @@ class OutputFilesCliTest {
         JsonObject json = JsonParser.parseString(Files.readString(out.resolve("p.json"))).getAsJsonObject();
         assertEquals(0, json.get("terrainTriangles").getAsLong(), "the CPU reference draws no triangles");
         assertEquals(0, json.get("lodErrorPx").getAsDouble(), "and intersects the full-resolution surface");
+        assertTrue(json.get("nearMetres").isJsonNull(), "nor has a near plane: " + json);
+        assertEquals(0, json.get("views").getAsInt(), "nor views");
         assertEquals(3 * 360, javax.imageio.ImageIO.read(out.resolve("p.png").toFile()).getWidth());
 
         Path reference = Files.createFile(d.resolve("made-by-any-program"));
