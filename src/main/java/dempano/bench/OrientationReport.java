@@ -104,7 +104,7 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
                double hfovDeg, OrientationEstimate est, double seconds, double cpuSeconds, double truthScore,
                double skylineMetres) {
         double headingError() {
-            double d = Math.abs(((est.headingDeg() - headingDeg) % 360 + 360) % 360);
+            double d = Math.abs(dempano.geo.Angles.wrap360(est.headingDeg() - headingDeg));
             return Math.min(d, 360 - d);
         }
     }

@@ -68,7 +68,7 @@ final class SyntheticPhoto {
                 view.rayOf(i, j, ray);
                 double az = Math.toDegrees(Math.atan2(ray[0], ray[1]));
                 double el = Math.toDegrees(Math.atan2(ray[2], Math.hypot(ray[0], ray[1])));
-                double x = ((az % 360 + 360) % 360) * ppd - 0.5, y = (g.topElevationDeg() - el) * ppd - 0.5;
+                double x = dempano.geo.Angles.wrap360(az) * ppd - 0.5, y = (g.topElevationDeg() - el) * ppd - 0.5;
                 int x0 = (int) Math.floor(x), y0 = (int) Math.floor(y);
                 double tx = x - x0, ty = y - y0;
                 double r = 0, gg = 0, b = 0;

@@ -119,10 +119,6 @@ public record CameraOrientation(double headingDeg, double pitchDeg, double rollD
     }
 
     static double normalize360(double deg) {
-        double d = deg % 360;
-        if (d < 0) {
-            d += 360;
-        }
-        return d == 360 ? 0 : d;
+        return dempano.geo.Angles.wrap360(deg);
     }
 }

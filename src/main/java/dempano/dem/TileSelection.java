@@ -112,7 +112,6 @@ public record TileSelection(int latSouthDeg, int lonWestDeg, int tilesNorthSouth
     }
 
     static double wrap180(double deg) {
-        double d = ((deg + 180) % 360 + 360) % 360 - 180;
-        return d;
+        return dempano.geo.Angles.wrap180(deg);
     }
 }

@@ -185,7 +185,6 @@ public final class ViewpointAdjustment {
     }
 
     private static double wrapLon(double lonDeg) {
-        double w = ((lonDeg + 180) % 360 + 360) % 360 - 180;
-        return w;
+        return Angles.wrap180(lonDeg);
     }
 }

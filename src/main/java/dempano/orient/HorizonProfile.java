@@ -143,7 +143,7 @@ public final class HorizonProfile {
             if (Double.isNaN(el[c]) || Double.isNaN(el[c + 1])) {
                 continue;
             }
-            double a0 = az[c], a1 = az[c] + (((az[c + 1] - az[c]) % 360 + 540) % 360 - 180);
+            double a0 = az[c], a1 = az[c] + dempano.geo.Angles.wrap180(az[c + 1] - az[c]);
             double lo = Math.min(a0, a1), hi = Math.max(a0, a1);
             if (hi - lo > 5) {
                 continue;

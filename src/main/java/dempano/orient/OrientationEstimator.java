@@ -1393,11 +1393,7 @@ public final class OrientationEstimator {
     }
 
     static double normalize360(double deg) {
-        double d = deg % 360;
-        if (d < 0) {
-            d += 360;
-        }
-        return d >= 360 ? 0 : d;
+        return dempano.geo.Angles.wrap360(deg);
     }
 
     /** Gaussian elimination with partial pivoting; null when singular. */

@@ -87,7 +87,7 @@ public record PanoramaGeometry(double pixelsPerDegree, double topElevationDeg, i
 
     /** Fractional column whose centre is at integer + 0.5 for a given azimuth (any wrapping). */
     public double columnOf(double azimuthDeg) {
-        double az = ((azimuthDeg % 360) + 360) % 360;
+        double az = dempano.geo.Angles.wrap360(azimuthDeg);
         return az * pixelsPerDegree;
     }
 

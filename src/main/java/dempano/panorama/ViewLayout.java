@@ -80,7 +80,7 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
             for (int k = 0; k < 4; k++) {
                 double x = edge[k][0], y = edge[k][1];
                 double e = a[0] * x + a[3] * y + a[6], no = a[1] * x + a[4] * y + a[7];
-                az[k * n + i] = ((Math.toDegrees(Math.atan2(e, no)) % 360) + 360) % 360;
+                az[k * n + i] = dempano.geo.Angles.wrap360(Math.toDegrees(Math.atan2(e, no)));
             }
         }
         java.util.Arrays.sort(az);
@@ -385,7 +385,7 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
 
     /** Which view a direction falls in. */
     public int viewOf(double azimuthDeg) {
-        double az = ((azimuthDeg % 360) + 360) % 360;
+        double az = dempano.geo.Angles.wrap360(azimuthDeg);
         return Math.min(views - 1, (int) Math.floor(az * views / 360));
     }
 

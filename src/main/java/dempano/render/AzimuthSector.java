@@ -40,7 +40,7 @@ final class AzimuthSector {
             return true;
         }
         double margin = 0.5;
-        double start = ((sector[0] - viewFrom) % 360 + 360) % 360; // sector start relative to the view
+        double start = dempano.geo.Angles.wrap360(sector[0] - viewFrom); // sector start relative to the view
         double end = start + sector[1];
         return start <= viewSpan + margin || end >= 360 - margin;
     }
@@ -50,6 +50,6 @@ final class AzimuthSector {
     }
 
     private static double wrap180(double d) {
-        return ((d + 180) % 360 + 360) % 360 - 180;
+        return dempano.geo.Angles.wrap180(d);
     }
 }

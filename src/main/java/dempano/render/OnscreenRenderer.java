@@ -402,7 +402,7 @@ public final class OnscreenRenderer extends SimpleApplication {
         double[] geo = frame.toGeodetic(p.x, -p.z, p.y);
         double ground = groundUnder(geo[0], geo[1]);
         double aboveGround = aboveGround(p, geo);
-        double heading = (Math.toDegrees(Math.atan2(d.x, -d.z)) + 360) % 360, pitch = Math.toDegrees(Math.asin(d.y));
+        double heading = dempano.geo.Angles.wrap360(Math.toDegrees(Math.atan2(d.x, -d.z))), pitch = Math.toDegrees(Math.asin(d.y));
         double[] hit = crosshair(p, d);
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "lat %.5f  lon %.5f%n", geo[0], geo[1]));
