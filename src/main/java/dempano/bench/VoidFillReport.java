@@ -250,7 +250,7 @@ public final class VoidFillReport {
         int r = Math.max(0, Math.min(n - 2, (int) Math.floor(row)));
         int c = Math.max(0, Math.min(n - 2, (int) Math.floor(col)));
         double fr = row - r, fc = col - c;
-        return (1 - fr) * ((1 - fc) * h[r * n + c] + fc * h[r * n + c + 1])
-                + fr * ((1 - fc) * h[(r + 1) * n + c] + fc * h[(r + 1) * n + c + 1]);
+        return dempano.util.Bilinear.interpolate(h[r * n + c], h[r * n + c + 1], h[(r + 1) * n + c],
+                h[(r + 1) * n + c + 1], fr, fc);
     }
 }

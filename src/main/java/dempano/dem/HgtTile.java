@@ -210,7 +210,7 @@ public final class HgtTile {
         double fr = row - r, fc = col - c;
         double h00 = heightMetres(r, c), h01 = heightMetres(r, c + 1);
         double h10 = heightMetres(r + 1, c), h11 = heightMetres(r + 1, c + 1);
-        return (1 - fr) * ((1 - fc) * h00 + fc * h01) + fr * ((1 - fc) * h10 + fc * h11);
+        return dempano.util.Bilinear.interpolate(h00, h01, h10, h11, fr, fc);
     }
 
     @Override

@@ -336,8 +336,8 @@ public final class Mosaic {
         double r = (double) lr * tn / n, c = (double) lc * tn / n;
         int r0 = Math.min(tn - 1, (int) r), c0 = Math.min(tn - 1, (int) c);
         double fr = r - r0, fc = c - c0;
-        return (float) ((1 - fr) * ((1 - fc) * t.heightMetres(r0, c0) + fc * t.heightMetres(r0, c0 + 1))
-                + fr * ((1 - fc) * t.heightMetres(r0 + 1, c0) + fc * t.heightMetres(r0 + 1, c0 + 1)));
+        return (float) dempano.util.Bilinear.interpolate(t.heightMetres(r0, c0), t.heightMetres(r0, c0 + 1),
+                t.heightMetres(r0 + 1, c0), t.heightMetres(r0 + 1, c0 + 1), fr, fc);
     }
 
     /**

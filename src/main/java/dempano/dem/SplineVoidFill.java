@@ -131,8 +131,8 @@ final class SplineVoidFill {
                 double rr = Math.min((i / n) / 2.0, m - 1), cc = Math.min((i % n) / 2.0, m - 1);
                 int r0 = Math.min((int) rr, m - 2), c0 = Math.min((int) cc, m - 2);
                 double fr = rr - r0, fc = cc - c0;
-                start[i] = (1 - fr) * ((1 - fc) * cs[r0 * m + c0] + fc * cs[r0 * m + c0 + 1])
-                        + fr * ((1 - fc) * cs[(r0 + 1) * m + c0] + fc * cs[(r0 + 1) * m + c0 + 1]);
+                start[i] = dempano.util.Bilinear.interpolate(cs[r0 * m + c0], cs[r0 * m + c0 + 1], cs[(r0 + 1) * m + c0],
+                        cs[(r0 + 1) * m + c0 + 1], fr, fc);
             }
         }
         return start;
