@@ -111,10 +111,11 @@ final class ResidentClient {
     }
 
     /**
-     * Seconds a resident process has to send its first frame (it acknowledges a run at once, status and stop are
-     * answered at once) before the client gives it up. (Not final: a test waits less.)
+     * Seconds a resident process may stay silent before the client gives it up: it acknowledges a run at once and
+     * sends a heartbeat every {@link ResidentServer#HEARTBEAT_MILLIS} while the run lasts; status and stop are
+     * answered at once. (Not final: a test waits less.)
      */
-    static volatile int FIRST_FRAME_SECONDS = 15;
+    static volatile int ANSWER_SECONDS = 15;
 
     /** The connection ended before the resident process answered at all (it was ending). */
     static final class Unanswered extends IOException {
@@ -144,16 +145,24 @@ final class ResidentClient {
             throw new Unanswered("the resident process could not be told the run (" + e.getMessage() + ")");
         }
         DataInputStream in = new DataInputStream(new java.io.BufferedInputStream(ResidentProtocol.in(ch)));
-        // A process that accepts but never answers (stopped, hung) must not hang this client: without a first frame
-        // within FIRST_FRAME_SECONDS the connection is closed, and the run renders here (status and stop say so).
+        // A process that accepts but never answers, or stops answering during the run (stopped, hung), must not hang
+        // this client: after ANSWER_SECONDS without a frame the connection is closed, and the run renders here (status
+        // and stop say so). Closing it also ends the resident process once it runs again (it notices the hang-up).
         Object log = logOf(socketOf(ch)); // while the channel is open (a closed one has no address)
-        java.util.concurrent.CountDownLatch firstFrame = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.atomic.AtomicLong lastFrame = new java.util.concurrent.atomic.AtomicLong(System.nanoTime());
+        java.util.concurrent.atomic.AtomicBoolean finished = new java.util.concurrent.atomic.AtomicBoolean();
         boolean[] timedOut = {false};
         Thread watchdog = new Thread(() -> {
+            long limit = ANSWER_SECONDS * 1_000_000_000L;
             try {
-                if (!firstFrame.await(FIRST_FRAME_SECONDS, java.util.concurrent.TimeUnit.SECONDS)) {
-                    timedOut[0] = true;
-                    ch.close();
+                while (!finished.get()) {
+                    long silent = System.nanoTime() - lastFrame.get();
+                    if (silent > limit) {
+                        timedOut[0] = true;
+                        ch.close();
+                        return;
+                    }
+                    Thread.sleep(Math.max(1, Math.min(250, (limit - silent) / 1_000_000 + 1)));
                 }
             } catch (InterruptedException | IOException e) {
                 // done either way
@@ -161,15 +170,26 @@ final class ResidentClient {
         }, "dempano-resident-watchdog");
         watchdog.setDaemon(true);
         watchdog.start();
+        try {
+            return frames(in, out, err, lastFrame, timedOut, log);
+        } finally {
+            finished.set(true);
+        }
+    }
+
+    /** The frames of one exchange, copied to {@code out} and {@code err}, until the exit code (see {@link #exchange}). */
+    private static int frames(DataInputStream in, PrintStream out, PrintStream err,
+                              java.util.concurrent.atomic.AtomicLong lastFrame, boolean[] timedOut, Object log)
+            throws IOException {
         for (boolean answered = false; ; answered = true) {
             ResidentProtocol.Frame f;
             try {
                 f = ResidentProtocol.Frame.read(in);
-                firstFrame.countDown();
+                lastFrame.set(System.nanoTime());
             } catch (IOException e) {
                 out.flush();
-                String why = timedOut[0] ? "the resident process did not answer within " + FIRST_FRAME_SECONDS + " s (stopped or"
-                        + " hung? `kill` it; its log: " + log + ")"
+                String why = timedOut[0] ? "the resident process " + (answered ? "fell silent during the run for " : "did not answer within ")
+                        + ANSWER_SECONDS + " s (stopped or hung? `kill` it; its log: " + log + ")"
                         : "the resident process ended before the run did (" + (e.getMessage() == null
                         ? e.getClass().getSimpleName() : e.getMessage()) + "; its log: " + log + ")";
                 if (timedOut[0]) {
@@ -224,16 +244,28 @@ final class ResidentClient {
             return ch;
         } catch (java.net.ConnectException | java.nio.file.NoSuchFileException e) {
             ch.close();
-            if (removeStale) {
+            if (removeStale && Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
+                if (!isSocket(socket)) { // a file of the user's own, say: not ours to remove
+                    throw new IOException(socket + " is not a socket (left as it is)");
+                }
                 Files.deleteIfExists(socket); // left by a process that was killed: nobody listens
             }
             return null;
         } catch (IOException e) {
             ch.close();
-            if (removeStale) {
+            if (removeStale && Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
                 throw e;
             }
-            return null;
+            return null; // (or removed as it ended, between the check above and connecting: none listens)
+        }
+    }
+
+    /** Whether {@code path} itself (not a link's target) is a Unix socket. */
+    private static boolean isSocket(Path path) {
+        try {
+            return ((Integer) Files.getAttribute(path, "unix:mode", LinkOption.NOFOLLOW_LINKS) & 0170000) == 0140000;
+        } catch (IOException | RuntimeException e) {
+            return false;
         }
     }
 
@@ -322,7 +354,10 @@ final class ResidentClient {
         // served every later client, whose runs then failed for want of heap.
         return Set.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME", "DEMPANO_GL", "DEMPANO_DEBUG", "DISPLAY", "WAYLAND_DISPLAY",
                 "DEMPANO_RESIDENT_IDLE_S", "JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "LD_LIBRARY_PATH",
-                "LD_PRELOAD").contains(name)
+                "LD_PRELOAD", "LANG", "LANGUAGE", "TZ").contains(name)
+                // The locale: the JVM takes its file-name and console encodings from it at start (a process started under
+                // LC_ALL=POSIX refused a later UTF-8 client's output name with an accent, which renders in a process of its own).
+                || name.startsWith("LC_")
                 || List.of("MESA_", "LIBGL_", "GALLIUM_", "LP_", "EGL_", "__GL", "__EGL").stream().anyMatch(name::startsWith);
     }
 

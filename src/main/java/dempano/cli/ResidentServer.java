@@ -59,6 +59,13 @@ public final class ResidentServer {
         dempano.io.OutputSet.discardUncommitted(); // halt runs no shutdown hook: the run's staging folder, removed here
         Runtime.getRuntime().halt(130);
     };
+    /**
+     * Milliseconds between the empty frames a run sends while it lasts, so that its client tells a long silent stage
+     * from a stopped or hung process ({@link ResidentClient#ANSWER_SECONDS}). (Not final: a test sends them faster.)
+     */
+    static volatile long HEARTBEAT_MILLIS = 2000;
+    /** Run before each render (tests make a long silent run with it). */
+    Runnable beforeRender = () -> { };
     private final KeptRenderer renderers = new KeptRenderer();
     private ServerSocketChannel server;
     /** The socket file's identity (inode) once bound. */
@@ -215,23 +222,25 @@ public final class ResidentServer {
                         w.refused("is busy with another run");
                         return;
                     }
-                    w.bytes(ResidentProtocol.ERR, new byte[0], 0, 0); // taken: the client's first frame, at once
-                    boolean ending = true;
+                    boolean released = false;
                     try {
+                        // Taken: the client's first frame, at once. Within the try: a client gone before it (it gave
+                        // up waiting on a stopped process) must not leave this process busy for good.
+                        w.bytes(ResidentProtocol.ERR, new byte[0], 0, 0);
                         int code = render(in, req, w);
-                        ending = stopRequested || renderers.broken;
-                        if (ending) {
+                        if (stopRequested || renderers.broken) {
                             log(stopRequested ? "ending, as requested" : "the renderer failed: ending, so that the next run starts afresh");
-                            closeQuietly();
+                            closeQuietly(); // busy until the exit code is sent: the process ends after that
                         } else {
                             // Free before the client hears the exit code: its next run may come at once.
                             lastActivity = Instant.now();
+                            released = true;
                             busy.set(false);
                         }
                         w.exit(code);
                     } finally {
-                        if (ending) {
-                            busy.set(false);
+                        if (!released) {
+                            busy.set(false); // ending, or failed before its exit code (the client gone)
                         }
                     }
                 }
@@ -271,6 +280,20 @@ public final class ResidentServer {
         }, "dempano-resident-hangup");
         hangUp.setDaemon(true);
         hangUp.start();
+        Thread heartbeat = new Thread(() -> {
+            try {
+                while (!done.get()) {
+                    Thread.sleep(HEARTBEAT_MILLIS);
+                    if (!done.get()) {
+                        w.bytes(ResidentProtocol.ERR, new byte[0], 0, 0);
+                    }
+                }
+            } catch (InterruptedException | IOException e) {
+                // its client went away (the hang-up thread sees to that)
+            }
+        }, "dempano-resident-heartbeat");
+        heartbeat.setDaemon(true);
+        heartbeat.start();
         PrintStream out = System.out, err = System.err;
         PrintStream runOut = new PrintStream(w.stream(ResidentProtocol.OUT), true, StandardCharsets.UTF_8);
         PrintStream runErr = new PrintStream(w.stream(ResidentProtocol.ERR), true, StandardCharsets.UTF_8);
@@ -279,14 +302,15 @@ public final class ResidentServer {
         System.setErr(runErr);
         try {
             runErr.printf(Locale.ROOT, "  resident process %d, run %d%n", ProcessHandle.current().pid(), run);
+            beforeRender.run();
             code = Main.run(new RunContext(Path.of(req.workingDir()), renderers), req.args().toArray(String[]::new));
             runOut.flush();
             runErr.flush();
         } finally {
             System.setOut(out);
             System.setErr(err);
+            done.set(true); // the heartbeat ends at its next wake-up (an interrupt during its write would close the channel)
         }
-        done.set(true);
         log("run " + run + " exit " + code);
         return code;
     }

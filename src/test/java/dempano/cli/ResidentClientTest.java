@@ -92,7 +92,8 @@ class ResidentClientTest {
         env.put("TERM", "xterm");
         assertEquals(base, ResidentClient.stamp(env), "unrelated variables");
         for (String shaping : List.of("DEMPANO_CACHE_DIR", "XDG_CACHE_HOME", "DEMPANO_GL", "DISPLAY", "MESA_GL_VERSION_OVERRIDE",
-                "LIBGL_ALWAYS_SOFTWARE", "GALLIUM_DRIVER", "LP_NUM_THREADS", "DEMPANO_RESIDENT_IDLE_S")) {
+                "LIBGL_ALWAYS_SOFTWARE", "GALLIUM_DRIVER", "LP_NUM_THREADS", "DEMPANO_RESIDENT_IDLE_S", "LANG", "LC_ALL",
+                "LC_CTYPE", "TZ")) {
             Map<String, String> other = new HashMap<>(env);
             other.put(shaping, "1");
             assertNotEquals(base, ResidentClient.stamp(other), shaping);
@@ -145,7 +146,7 @@ class ResidentClientTest {
     @Test
     void aProcessThatAcceptsButNeverAnswersDoesNotHangTheClient(@TempDir Path dir) throws Exception {
         // A resident process stopped (kill -STOP) or hung: the kernel still accepts connections. Every later run and
-        // `resident stop` hung; now the client gives up after FIRST_FRAME_SECONDS and the run renders in the client.
+        // `resident stop` hung; now the client gives up after ANSWER_SECONDS and the run renders in the client.
         Path socket = dir.resolve("s.sock");
         try (java.nio.channels.ServerSocketChannel server = java.nio.channels.ServerSocketChannel.open(
                 java.net.StandardProtocolFamily.UNIX)) {
@@ -160,8 +161,8 @@ class ResidentClientTest {
             });
             acceptor.setDaemon(true);
             acceptor.start();
-            int before = ResidentClient.FIRST_FRAME_SECONDS;
-            ResidentClient.FIRST_FRAME_SECONDS = 1;
+            int before = ResidentClient.ANSWER_SECONDS;
+            ResidentClient.ANSWER_SECONDS = 1;
             long t0 = System.nanoTime();
             try (java.nio.channels.SocketChannel ch = ResidentClient.connect(socket)) {
                 IOException e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
@@ -169,13 +170,68 @@ class ResidentClientTest {
                 assertTrue(e.getMessage().contains("did not answer within 1 s"), e.getMessage());
                 assertFalse(e instanceof ResidentClient.Unanswered, "not tried again");
             } finally {
-                ResidentClient.FIRST_FRAME_SECONDS = before;
+                ResidentClient.ANSWER_SECONDS = before;
                 for (java.nio.channels.SocketChannel c : held) {
                     c.close();
                 }
             }
             assertTrue((System.nanoTime() - t0) / 1e9 < 10, "gave up after about a second");
         }
+    }
+
+    @Test
+    void aProcessThatFallsSilentDuringTheRunDoesNotHangTheClient(@TempDir Path dir) throws Exception {
+        // Stopped (kill -STOP) or hung after it took the run: the client waited for ever (the watch covered only the
+        // first frame). A live process sends a heartbeat every ResidentServer.HEARTBEAT_MILLIS.
+        Path socket = dir.resolve("s.sock");
+        try (java.nio.channels.ServerSocketChannel server = java.nio.channels.ServerSocketChannel.open(
+                java.net.StandardProtocolFamily.UNIX)) {
+            server.bind(java.net.UnixDomainSocketAddress.of(socket));
+            java.util.List<java.nio.channels.SocketChannel> held = new java.util.concurrent.CopyOnWriteArrayList<>();
+            Thread acceptor = new Thread(() -> {
+                try {
+                    java.nio.channels.SocketChannel c = server.accept();
+                    held.add(c);
+                    ResidentProtocol.Request.read(new java.io.DataInputStream(ResidentProtocol.in(c)));
+                    new ResidentProtocol.Writer(ResidentProtocol.out(c)).bytes(ResidentProtocol.ERR, new byte[0], 0, 0);
+                    new ResidentProtocol.Writer(ResidentProtocol.out(c)).bytes(ResidentProtocol.ERR,
+                            "stitching\n".getBytes(java.nio.charset.StandardCharsets.UTF_8), 0, 10); // then silence
+                } catch (IOException e) {
+                    // closed
+                }
+            });
+            acceptor.setDaemon(true);
+            acceptor.start();
+            int before = ResidentClient.ANSWER_SECONDS;
+            ResidentClient.ANSWER_SECONDS = 1;
+            long t0 = System.nanoTime();
+            java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+            try (java.nio.channels.SocketChannel ch = ResidentClient.connect(socket)) {
+                IOException e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
+                        ResidentProtocol.RENDER, "stamp", dir.toString(), List.of()), System.out, new java.io.PrintStream(err)));
+                assertTrue(e.getMessage().contains("fell silent during the run for 1 s"), e.getMessage());
+                assertFalse(e instanceof ResidentClient.Unanswered, "not tried again");
+            } finally {
+                ResidentClient.ANSWER_SECONDS = before;
+                for (java.nio.channels.SocketChannel c : held) {
+                    c.close();
+                }
+            }
+            assertEquals("stitching\n", err.toString(), "what came before the silence was passed on");
+            assertTrue((System.nanoTime() - t0) / 1e9 < 10, "gave up after about a second");
+        }
+    }
+
+    @Test
+    void aFileThatIsNoSocketIsLeftAsItIs(@TempDir Path dir) throws IOException {
+        // `dempano resident status` removed any *.sock file nobody listened on, a user's notes.sock included.
+        Path notes = Files.writeString(dir.resolve("notes.sock"), "important\n");
+        IOException e = assertThrows(IOException.class, () -> ResidentClient.connect(notes));
+        assertTrue(e.getMessage().contains("is not a socket"), e.getMessage());
+        assertEquals("important\n", Files.readString(notes));
+        Path link = Files.createSymbolicLink(dir.resolve("link.sock"), notes);
+        assertThrows(IOException.class, () -> ResidentClient.connect(link));
+        assertTrue(Files.isSymbolicLink(link), "a link is not removed either");
     }
 
     @Test

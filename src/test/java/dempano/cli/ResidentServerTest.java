@@ -209,6 +209,57 @@ class ResidentServerTest {
         assertFalse(Files.exists(work.resolve("out/p.png")));
     }
 
+    /** A run silent for longer than a client waits (a long stage) is kept alive by the heartbeat. */
+    @Test
+    void aLongSilentRunIsKeptAliveByItsHeartbeat() throws IOException {
+        long heartbeat = ResidentServer.HEARTBEAT_MILLIS;
+        int answer = ResidentClient.ANSWER_SECONDS;
+        ResidentServer.HEARTBEAT_MILLIS = 200;
+        ResidentClient.ANSWER_SECONDS = 1;
+        server.beforeRender = () -> {
+            try {
+                Thread.sleep(3000); // three times what the client waits in silence
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        };
+        try {
+            Result r = render(scene("--out", "out/slow", "--renderer", "reference"));
+            assertEquals(0, r.code(), r.err());
+        } finally {
+            ResidentServer.HEARTBEAT_MILLIS = heartbeat;
+            ResidentClient.ANSWER_SECONDS = answer;
+            server.beforeRender = () -> { };
+        }
+        assertTrue(Files.isRegularFile(work.resolve("out/slow.png")));
+    }
+
+    /**
+     * A client gone before its run was taken (it gave up waiting on a stopped process, or was stopped itself) left
+     * the process busy for good: every later client was refused, and neither idle time nor stop ended it.
+     */
+    @Test
+    void aClientGoneBeforeItsRunWasTakenLeavesTheProcessFree() throws Exception {
+        try (var ch = ResidentClient.connect(socket)) {
+            ch.shutdownInput(); // first (no race with the process's answer): its first frame fails, as to a client gone
+            new ResidentProtocol.Request(ResidentProtocol.RENDER, STAMP, work.toString(),
+                    List.of(scene("--out", "out/never", "--renderer", "reference")))
+                    .write(new java.io.DataOutputStream(ResidentProtocol.out(ch)));
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+            Result r = null;
+            while (r == null && System.nanoTime() < until) {
+                try {
+                    r = render(scene("--out", "out/next", "--renderer", "reference"));
+                } catch (ResidentClient.Refused busy) {
+                    Thread.sleep(100); // the gone client's request may still be in hand
+                }
+            }
+            assertTrue(r != null, "the process stayed busy with a run whose client was gone");
+            assertEquals(0, r.code(), r.err());
+        }
+        assertFalse(Files.exists(work.resolve("out/never.png")), "the gone client's run was not made");
+    }
+
     @Test
     void stopEndsTheProcessAndRemovesItsSocket() throws Exception {
         Result stop = send(ResidentProtocol.STOP, STAMP);
