@@ -40,7 +40,7 @@ final class ResidentCommand implements Callable<Integer> {
         try (var files = java.nio.file.Files.list(dir)) {
             sockets = files.filter(f -> f.getFileName().toString().endsWith(".sock")).sorted().toList();
         }
-        int answered = 0;
+        int answered = 0, silent = 0;
         String stamp = ResidentClient.stamp(env);
         for (Path socket : sockets) {
             SocketChannel ch;
@@ -59,10 +59,13 @@ final class ResidentCommand implements Callable<Integer> {
                 answered++;
             } catch (IOException e) {
                 System.out.println(socket + ": " + e.getMessage());
+                silent++;
             }
         }
         if (answered == 0) {
-            System.out.println("no resident process (folder " + dir + ")");
+            // A process that did not answer (stopped, hung) is still there: not "no resident process".
+            System.out.println(silent > 0 ? "no resident process answered (" + silent + " did not: above; folder " + dir + ")"
+                    : "no resident process (folder " + dir + ")");
             return 1;
         }
         return 0;
