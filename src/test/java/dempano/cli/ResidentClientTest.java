@@ -143,46 +143,16 @@ class ResidentClientTest {
         }
     }
 
-    @Test
-    void aProcessThatAcceptsButNeverAnswersDoesNotHangTheClient(@TempDir Path dir) throws Exception {
-        // A resident process stopped (kill -STOP) or hung: the kernel still accepts connections. Every later run and
-        // `resident stop` hung; now the client gives up after ANSWER_SECONDS and the run renders in the client.
-        Path socket = dir.resolve("s.sock");
-        try (java.nio.channels.ServerSocketChannel server = java.nio.channels.ServerSocketChannel.open(
-                java.net.StandardProtocolFamily.UNIX)) {
-            server.bind(java.net.UnixDomainSocketAddress.of(socket));
-            java.util.List<java.nio.channels.SocketChannel> held = new java.util.concurrent.CopyOnWriteArrayList<>();
-            Thread acceptor = new Thread(() -> {
-                try {
-                    held.add(server.accept()); // and never a byte back
-                } catch (IOException e) {
-                    // closed
-                }
-            });
-            acceptor.setDaemon(true);
-            acceptor.start();
-            int before = ResidentClient.ANSWER_SECONDS;
-            ResidentClient.ANSWER_SECONDS = 1;
-            long t0 = System.nanoTime();
-            try (java.nio.channels.SocketChannel ch = ResidentClient.connect(socket)) {
-                IOException e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
-                        ResidentProtocol.STATUS, "stamp", dir.toString(), List.of()), System.out, System.err));
-                assertTrue(e.getMessage().contains("did not answer within 1 s"), e.getMessage());
-                assertFalse(e instanceof ResidentClient.Unanswered, "not tried again");
-            } finally {
-                ResidentClient.ANSWER_SECONDS = before;
-                for (java.nio.channels.SocketChannel c : held) {
-                    c.close();
-                }
-            }
-            assertTrue((System.nanoTime() - t0) / 1e9 < 10, "gave up after about a second");
-        }
+    /** What a fake resident process does with the one connection it accepts (then it holds it open, silent). */
+    private interface Behaviour {
+        void on(java.nio.channels.SocketChannel c) throws IOException;
     }
 
-    @Test
-    void aProcessThatFallsSilentDuringTheRunDoesNotHangTheClient(@TempDir Path dir) throws Exception {
-        // Stopped (kill -STOP) or hung after it took the run: the client waited for ever (the watch covered only the
-        // first frame). A live process sends a heartbeat every ResidentServer.HEARTBEAT_MILLIS.
+    /**
+     * A request of {@code kind} to a fake resident process that behaves so and then says nothing: the client must give
+     * up after ANSWER_SECONDS (1 s here), not try again, and pass on what came before. Returns the error and stderr.
+     */
+    private static String[] exchangeWithSilent(Path dir, String kind, Behaviour behaviour) throws Exception {
         Path socket = dir.resolve("s.sock");
         try (java.nio.channels.ServerSocketChannel server = java.nio.channels.ServerSocketChannel.open(
                 java.net.StandardProtocolFamily.UNIX)) {
@@ -192,10 +162,7 @@ class ResidentClientTest {
                 try {
                     java.nio.channels.SocketChannel c = server.accept();
                     held.add(c);
-                    ResidentProtocol.Request.read(new java.io.DataInputStream(ResidentProtocol.in(c)));
-                    new ResidentProtocol.Writer(ResidentProtocol.out(c)).bytes(ResidentProtocol.ERR, new byte[0], 0, 0);
-                    new ResidentProtocol.Writer(ResidentProtocol.out(c)).bytes(ResidentProtocol.ERR,
-                            "stitching\n".getBytes(java.nio.charset.StandardCharsets.UTF_8), 0, 10); // then silence
+                    behaviour.on(c);
                 } catch (IOException e) {
                     // closed
                 }
@@ -206,10 +173,10 @@ class ResidentClientTest {
             ResidentClient.ANSWER_SECONDS = 1;
             long t0 = System.nanoTime();
             java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+            IOException e;
             try (java.nio.channels.SocketChannel ch = ResidentClient.connect(socket)) {
-                IOException e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
-                        ResidentProtocol.RENDER, "stamp", dir.toString(), List.of()), System.out, new java.io.PrintStream(err)));
-                assertTrue(e.getMessage().contains("fell silent during the run for 1 s"), e.getMessage());
+                e = assertThrows(IOException.class, () -> ResidentClient.exchange(ch, new ResidentProtocol.Request(
+                        kind, "stamp", dir.toString(), List.of()), System.out, new java.io.PrintStream(err)));
                 assertFalse(e instanceof ResidentClient.Unanswered, "not tried again");
             } finally {
                 ResidentClient.ANSWER_SECONDS = before;
@@ -217,9 +184,31 @@ class ResidentClientTest {
                     c.close();
                 }
             }
-            assertEquals("stitching\n", err.toString(), "what came before the silence was passed on");
             assertTrue((System.nanoTime() - t0) / 1e9 < 10, "gave up after about a second");
+            return new String[] {e.getMessage(), err.toString(java.nio.charset.StandardCharsets.UTF_8)};
         }
+    }
+
+    @Test
+    void aProcessThatAcceptsButNeverAnswersDoesNotHangTheClient(@TempDir Path dir) throws Exception {
+        // A resident process stopped (kill -STOP) or hung: the kernel still accepts connections. Every later run and
+        // `resident stop` hung; now the client gives up after ANSWER_SECONDS and the run renders in the client.
+        String[] r = exchangeWithSilent(dir, ResidentProtocol.STATUS, c -> { }); // not a byte back
+        assertTrue(r[0].contains("did not answer within 1 s"), r[0]);
+    }
+
+    @Test
+    void aProcessThatFallsSilentDuringTheRunDoesNotHangTheClient(@TempDir Path dir) throws Exception {
+        // Stopped (kill -STOP) or hung after it took the run: the client waited for ever (the watch covered only the
+        // first frame). A live process sends a heartbeat every ResidentServer.HEARTBEAT_MILLIS.
+        String[] r = exchangeWithSilent(dir, ResidentProtocol.RENDER, c -> {
+            ResidentProtocol.Request.read(new java.io.DataInputStream(ResidentProtocol.in(c)));
+            ResidentProtocol.Writer w = new ResidentProtocol.Writer(ResidentProtocol.out(c));
+            w.bytes(ResidentProtocol.ERR, new byte[0], 0, 0); // taken
+            w.bytes(ResidentProtocol.ERR, "stitching\n".getBytes(java.nio.charset.StandardCharsets.UTF_8), 0, 10);
+        });
+        assertTrue(r[0].contains("fell silent during the run for 1 s"), r[0]);
+        assertEquals("stitching\n", r[1], "what came before the silence was passed on");
     }
 
     @Test
