@@ -104,7 +104,7 @@ public record CameraOrientation(double headingDeg, double pitchDeg, double rollD
             double ue = -m[1], un = -m[4];
             double sign = fu > 0 ? -1 : 1;
             double heading = Math.toDegrees(Math.atan2(sign * ue, sign * un));
-            return new CameraOrientation(normalize360(heading), fu > 0 ? 90 : -90, 0);
+            return new CameraOrientation(dempano.geo.Angles.wrap360(heading), fu > 0 ? 90 : -90, 0);
         }
         double psi = Math.atan2(fe, fn);
         double heading = Math.toDegrees(psi);
@@ -115,10 +115,6 @@ public record CameraOrientation(double headingDeg, double pitchDeg, double rollD
         double cosPhi = re * cp - rn * sp;
         double sinPhi = -(re * (-sp * st) + rn * (-cp * st) + ru * ct);
         double roll = Math.toDegrees(Math.atan2(sinPhi, cosPhi));
-        return new CameraOrientation(normalize360(heading), pitch, roll == -180 ? 180 : roll);
-    }
-
-    static double normalize360(double deg) {
-        return dempano.geo.Angles.wrap360(deg);
+        return new CameraOrientation(dempano.geo.Angles.wrap360(heading), pitch, roll == -180 ? 180 : roll);
     }
 }

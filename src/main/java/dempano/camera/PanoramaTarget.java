@@ -53,7 +53,7 @@ public record PanoramaTarget(PanoramaGeometry geometry) implements TargetImage {
         }
         double ppd = geometry.pixelsPerDegree();
         double az = Math.toDegrees(Math.atan2(east, north));
-        double px = CameraOrientation.normalize360(az) * ppd - 0.5;
+        double px = dempano.geo.Angles.wrap360(az) * ppd - 0.5;
         int w = geometry.widthPx();
         if (px >= w - 0.5) {
             px -= w;

@@ -151,14 +151,14 @@ final class ResidentClient {
         Object log = logOf(socketOf(ch)); // while the channel is open (a closed one has no address)
         java.util.concurrent.atomic.AtomicLong lastFrame = new java.util.concurrent.atomic.AtomicLong(System.nanoTime());
         java.util.concurrent.atomic.AtomicBoolean finished = new java.util.concurrent.atomic.AtomicBoolean();
-        boolean[] timedOut = {false};
+        java.util.concurrent.atomic.AtomicBoolean timedOut = new java.util.concurrent.atomic.AtomicBoolean();
         Thread watchdog = new Thread(() -> {
             long limit = ANSWER_SECONDS * 1_000_000_000L;
             try {
                 while (!finished.get()) {
                     long silent = System.nanoTime() - lastFrame.get();
                     if (silent > limit) {
-                        timedOut[0] = true;
+                        timedOut.set(true);
                         ch.close();
                         return;
                     }
@@ -179,7 +179,8 @@ final class ResidentClient {
 
     /** The frames of one exchange, copied to {@code out} and {@code err}, until the exit code (see {@link #exchange}). */
     private static int frames(DataInputStream in, PrintStream out, PrintStream err,
-                              java.util.concurrent.atomic.AtomicLong lastFrame, boolean[] timedOut, Object log)
+                              java.util.concurrent.atomic.AtomicLong lastFrame,
+                              java.util.concurrent.atomic.AtomicBoolean timedOut, Object log)
             throws IOException {
         for (boolean answered = false; ; answered = true) {
             ResidentProtocol.Frame f;
@@ -188,11 +189,11 @@ final class ResidentClient {
                 lastFrame.set(System.nanoTime());
             } catch (IOException e) {
                 out.flush();
-                String why = timedOut[0] ? "the resident process " + (answered ? "fell silent during the run for " : "did not answer within ")
+                String why = timedOut.get() ? "the resident process " + (answered ? "fell silent during the run for " : "did not answer within ")
                         + ANSWER_SECONDS + " s (stopped or hung? `kill` it; its log: " + log + ")"
                         : "the resident process ended before the run did (" + (e.getMessage() == null
                         ? e.getClass().getSimpleName() : e.getMessage()) + "; its log: " + log + ")";
-                if (timedOut[0]) {
+                if (timedOut.get()) {
                     throw new IOException(why, e); // not again: a second wait would only double the delay
                 }
                 throw answered ? new IOException(why, e) : new Unanswered(why);

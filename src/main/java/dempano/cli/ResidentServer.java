@@ -138,11 +138,12 @@ public final class ResidentServer {
                 if (busy.get()) {
                     continue; // a run under way is finished first
                 }
-                if (!collected && Duration.between(lastActivity, Instant.now()).compareTo(IDLE_COLLECT) > 0) {
+                Duration idleFor = Duration.between(lastActivity, Instant.now());
+                if (!collected && idleFor.compareTo(IDLE_COLLECT) > 0) {
                     collected = true;
                     System.gc();
                 }
-                boolean idleOut = Duration.between(lastActivity, Instant.now()).compareTo(idle) > 0;
+                boolean idleOut = idleFor.compareTo(idle) > 0;
                 boolean reinstalled = !classPath.equals(ResidentClient.classPath());
                 if ((idleOut || reinstalled || !ours()) && server.isOpen()) {
                     log(idleOut ? "idle for " + idle.toSeconds() + " s" : reinstalled

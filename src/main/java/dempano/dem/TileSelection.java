@@ -40,7 +40,7 @@ public record TileSelection(int latSouthDeg, int lonWestDeg, int tilesNorthSouth
         double minDLon = 0, maxDLon = 0;
         for (int az = 0; az < 360; az += 1) {
             double[] p = Geodesy.destination(latDeg, lonDeg, az, rangeMetres);
-            double d = wrap180(p[1] - lonDeg);
+            double d = dempano.geo.Angles.wrap180(p[1] - lonDeg);
             minDLon = Math.min(minDLon, d);
             maxDLon = Math.max(maxDLon, d);
         }
@@ -90,7 +90,7 @@ public record TileSelection(int latSouthDeg, int lonWestDeg, int tilesNorthSouth
 
     /** Geodesic distance (metres) from a point to the nearest point of a tile; 0 inside it. */
     static double distanceToTileMetres(double latDeg, double lonDeg, int tileLatSouth, int tileLonWestUnwrapped) {
-        double dLon = wrap180(lonDeg - tileLonWestUnwrapped);
+        double dLon = dempano.geo.Angles.wrap180(lonDeg - tileLonWestUnwrapped);
         double lonLocal = tileLonWestUnwrapped + dLon; // viewpoint longitude near the tile's
         if (latDeg >= tileLatSouth && latDeg <= tileLatSouth + 1 && lonLocal >= tileLonWestUnwrapped
                 && lonLocal <= tileLonWestUnwrapped + 1) {
@@ -109,9 +109,5 @@ public record TileSelection(int latSouthDeg, int lonWestDeg, int tilesNorthSouth
         double clampLat = Math.max(tileLatSouth, Math.min(tileLatSouth + 1, latDeg));
         double clampLon = Math.max(tileLonWestUnwrapped, Math.min(tileLonWestUnwrapped + 1, lonLocal));
         return Math.min(best, Geodesy.distanceMetres(latDeg, lonDeg, clampLat, clampLon));
-    }
-
-    static double wrap180(double deg) {
-        return dempano.geo.Angles.wrap180(deg);
     }
 }

@@ -58,7 +58,7 @@ public final class ViewpointAdjustment {
                     continue;
                 }
                 if (h > best.heightMetres() || (h == best.heightMetres() && d < best.distanceMetres())) {
-                    best = new GridPoint(mosaic.latOfRow(r), wrapLon(mosaic.lonOfCol(c)), h, d);
+                    best = new GridPoint(mosaic.latOfRow(r), Angles.wrap180(mosaic.lonOfCol(c)), h, d);
                 }
             }
         }
@@ -182,9 +182,5 @@ public final class ViewpointAdjustment {
             throw new IllegalArgumentException(String.format(Locale.ROOT, "%s: the radius must be in (0, %.0f] metres, got %s",
                     option, MAX_RADIUS_METRES, radiusMetres));
         }
-    }
-
-    private static double wrapLon(double lonDeg) {
-        return Angles.wrap180(lonDeg);
     }
 }

@@ -282,7 +282,7 @@ public final class OrientationEstimator {
         Fit fit = Fit.of(best, target, w, h, profile);
         double margin = second == null ? Double.NaN : second.score() - best.score();
         OrientationEstimate.Pose secondPose = second == null ? null
-                : new OrientationEstimate.Pose(normalize360(second.headingDeg()), second.pitchDeg(), second.rollDeg(), second.hfovDeg());
+                : new OrientationEstimate.Pose(dempano.geo.Angles.wrap360(second.headingDeg()), second.pitchDeg(), second.rollDeg(), second.hfovDeg());
         if (!Double.isNaN(priors.headingDeg()) && priors.headingRangeDeg() < 180) {
             // A prior restricts the answer, not the competition: a compass heading 8° off, pinned, fitted pitch, roll
             // and FOV to the wrong skyline with half the samples "fitting". The best pose at any other heading says
@@ -304,7 +304,7 @@ public final class OrientationEstimator {
             }
         }
         boolean unsure = isUnsure(fit.inlierShare(), best.score(), margin) || onFovBound(best.hfovDeg(), priors);
-        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+        return new OrientationEstimate(dempano.geo.Angles.wrap360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
                 fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), secondPose, margin, unsure, fine.size(),
                 (System.nanoTime() - t0) / 1e9, Double.NaN, Double.NaN);
     }
@@ -383,7 +383,7 @@ public final class OrientationEstimator {
         Target target = Target.of(a.samples(), edges, ref.field(), priors.lens());
         Hypothesis best = refine(a.pose(), target, w, h, ref.profile(), priors);
         Fit fit = Fit.of(best, target, w, h, ref.profile());
-        return new OrientationEstimate(normalize360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
+        return new OrientationEstimate(dempano.geo.Angles.wrap360(best.headingDeg()), best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
                 fit.residualPx(), fit.inlierShare(), best.score(), fit.edgeScore(), e.second(), e.marginScore(),
                 e.unsure(), e.samples(), e.seconds() + (System.nanoTime() - t0) / 1e9, a.offsetMetres(), a.sigmaMetres());
     }
@@ -1136,7 +1136,7 @@ public final class OrientationEstimator {
         double[] hi = {Double.POSITIVE_INFINITY, priors.pitchLimitDeg() + 5, Double.POSITIVE_INFINITY, fovHigh(priors)};
         p = levenbergMarquardt(p, free, lo, hi, q -> residualsPx(hyp(q), s, w, h, profile), s);
         double[] r = residualsPx(hyp(p), s, w, h, profile);
-        return new Hypothesis(normalize360(p[0]), p[1], p[2], p[3], score(r, s, TRUNCATION_PX));
+        return new Hypothesis(dempano.geo.Angles.wrap360(p[0]), p[1], p[2], p[3], score(r, s, TRUNCATION_PX));
     }
 
     /** Step of the forward differences of {@link #jacobian}, in each parameter's own unit (degrees, metres). */
@@ -1388,12 +1388,8 @@ public final class OrientationEstimator {
 
     /** The angle between two headings, degrees, [0, 180]. */
     public static double headingGap(double a, double b) {
-        double d = Math.abs(normalize360(a) - normalize360(b));
+        double d = Math.abs(dempano.geo.Angles.wrap360(a) - dempano.geo.Angles.wrap360(b));
         return Math.min(d, 360 - d);
-    }
-
-    static double normalize360(double deg) {
-        return dempano.geo.Angles.wrap360(deg);
     }
 
     /** Gaussian elimination with partial pivoting; null when singular. */

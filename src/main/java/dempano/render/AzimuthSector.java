@@ -27,7 +27,7 @@ final class AzimuthSector {
         }
         double first = azimuth(x0, z0), lo = 0, hi = 0;
         for (double[] c : new double[][] {{x1, z0}, {x0, z1}, {x1, z1}}) {
-            double d = wrap180(azimuth(c[0], c[1]) - first);
+            double d = dempano.geo.Angles.wrap180(azimuth(c[0], c[1]) - first);
             lo = Math.min(lo, d);
             hi = Math.max(hi, d);
         }
@@ -47,9 +47,5 @@ final class AzimuthSector {
 
     private static double azimuth(double x, double z) {
         return Math.toDegrees(Math.atan2(x, -z)); // x east, -z north
-    }
-
-    private static double wrap180(double d) {
-        return dempano.geo.Angles.wrap180(d);
     }
 }

@@ -7,7 +7,7 @@ public final class Bilinear {
 
     /**
      * The value at fraction {@code fr} of the way from the cell's north row to its south row and {@code fc} from its
-     * west column to its east column (both usually in [0, 1]; outside, the plane through the corners is extended).
+     * west column to its east column (both usually in [0, 1]; outside, the same bilinear surface extended).
      * Rows first, then columns, in this order of operations everywhere (the same bits wherever it is used).
      *
      * @param h00 north-west corner

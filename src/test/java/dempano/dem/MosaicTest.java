@@ -48,7 +48,7 @@ class MosaicTest {
     })
     void stitchesWithoutDuplicatingEdges(double lat, double lon, int blockLatS, int blockLonW) {
         // Linear inside every tile and continuous across 0° and ±180° (kinks only on tile edges).
-        DoubleBinaryOperator f = (la, lo) -> 500 + 40 * la + 17 * Math.abs(TileSelection.wrap180(lo));
+        DoubleBinaryOperator f = (la, lo) -> 500 + 40 * la + 17 * Math.abs(dempano.geo.Angles.wrap180(lo));
         DemSource dem = blockAround(blockLatS - 1, blockLonW - 1, 4, 4, f);
         Mosaic m = Mosaic.around(dem, lat, lon, 60_000, MissingTilePolicy.ERROR);
         assertEquals(m.tilesNorthSouth() * 120 + 1, m.rows());
@@ -235,7 +235,7 @@ class MosaicTest {
             }
             double wrapped = a.wrappedLonOfCol(c);
             assertTrue(wrapped >= -180 && wrapped < 180, "col " + c + ": " + wrapped);
-            assertEquals(TileSelection.wrap180(a.lonOfCol(c)), wrapped, 1e-12, "col " + c);
+            assertEquals(dempano.geo.Angles.wrap180(a.lonOfCol(c)), wrapped, 1e-12, "col " + c);
             compared++;
         }
         assertTrue(compared > 200, "compared " + compared);

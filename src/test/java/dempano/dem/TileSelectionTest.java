@@ -52,7 +52,7 @@ class TileSelectionTest {
                 best = Math.min(best, Geodesy.distanceMetres(lat, lon, p[0], p[1]));
             }
         }
-        if (lat >= latS && lat <= latS + 1 && TileSelection.wrap180(lon - lonW) >= 0 && TileSelection.wrap180(lon - lonW) <= 1) {
+        if (lat >= latS && lat <= latS + 1 && dempano.geo.Angles.wrap180(lon - lonW) >= 0 && dempano.geo.Angles.wrap180(lon - lonW) <= 1) {
             return 0;
         }
         return best;
