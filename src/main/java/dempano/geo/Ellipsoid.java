@@ -28,8 +28,18 @@ public final class Ellipsoid {
 
     /** Prime-vertical radius of curvature N(φ), metres. */
     public static double primeVerticalRadiusMetres(double latDeg) {
-        double s = Math.sin(Math.toRadians(latDeg));
-        return A_METRES / Math.sqrt(1 - E2 * s * s);
+        return primeVerticalRadiusOfSinMetres(Math.sin(Math.toRadians(latDeg)));
+    }
+
+    /** Prime-vertical radius of curvature N(φ) = a / √(1 − e² sin²φ), metres, from sin φ (hot loops have it). */
+    public static double primeVerticalRadiusOfSinMetres(double sinLat) {
+        return A_METRES / Math.sqrt(1 - E2 * sinLat * sinLat);
+    }
+
+    /** Meridian radius of curvature M(φ) = a (1 − e²) / (1 − e² sin²φ)^{3/2}, metres, from sin φ. */
+    public static double meridianRadiusOfSinMetres(double sinLat) {
+        double w2 = 1 - E2 * sinLat * sinLat;
+        return A_METRES * (1 - E2) / (w2 * Math.sqrt(w2));
     }
 
     /**
@@ -46,7 +56,7 @@ public final class Ellipsoid {
     /** Geodetic to ECEF from precomputed sines and cosines (hot loops reuse them per row/column). */
     public static void toEcef(double sinLat, double cosLat, double sinLon, double cosLon,
                               double heightMetres, double[] out) {
-        double n = A_METRES / Math.sqrt(1 - E2 * sinLat * sinLat);
+        double n = primeVerticalRadiusOfSinMetres(sinLat);
         out[0] = (n + heightMetres) * cosLat * cosLon;
         out[1] = (n + heightMetres) * cosLat * sinLon;
         out[2] = (n * (1 - E2) + heightMetres) * sinLat;

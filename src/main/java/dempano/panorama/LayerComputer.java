@@ -204,15 +204,17 @@ public final class LayerComputer {
         double nw = m.sample(r, c), ne = m.sample(r, c + 1), sw = m.sample(r + 1, c), se = m.sample(r + 1, c + 1);
         // Height gradient on the cell's triangle, metres per cell step east (du) and south (dv).
         double du, dv;
-        if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
-            if (uu >= v) {
+        boolean nwToSe = Triangulation.splitsNorthWestToSouthEast(r, c);
+        boolean northTriangle = Triangulation.triangleHolding(nwToSe, v, uu) == Triangulation.NORTH;
+        if (nwToSe) {
+            if (northTriangle) {
                 du = ne - nw;
                 dv = se - ne;
             } else {
                 du = se - sw;
                 dv = sw - nw;
             }
-        } else if (uu + v <= 1) {
+        } else if (northTriangle) {
             du = ne - nw;
             dv = sw - nw;
         } else {
@@ -224,11 +226,9 @@ public final class LayerComputer {
         }
         double phi = Math.toRadians(latDeg), lam = Math.toRadians(lonDeg);
         double sp = Math.sin(phi), cp = Math.cos(phi), sl = Math.sin(lam), cl = Math.cos(lam);
-        double w2 = 1 - Ellipsoid.E2 * sp * sp;
-        double meridianRadius = Ellipsoid.A_METRES * (1 - Ellipsoid.E2) / (w2 * Math.sqrt(w2));
         double step = Math.toRadians(1.0 / m.intervalsPerDegree());
-        double eastStepMetres = step * Ellipsoid.primeVerticalRadiusMetres(latDeg) * cp;
-        double southStepMetres = step * meridianRadius;
+        double eastStepMetres = step * Ellipsoid.primeVerticalRadiusOfSinMetres(sp) * cp;
+        double southStepMetres = step * Ellipsoid.meridianRadiusOfSinMetres(sp);
         double gE = du / eastStepMetres, gN = -dv / southStepMetres;
         // Local ENU axes at the point, in ECEF.
         double[] east = {-sl, cl, 0}, north = {-sp * cl, -sp * sl, cp}, up = {cp * cl, cp * sl, sp};

@@ -130,32 +130,13 @@ public final class RayCastReference {
         int r = Math.max(0, Math.min(m.rows() - 2, (int) Math.floor(row)));
         int c = Math.max(0, Math.min(m.cols() - 2, (int) Math.floor(col)));
         double y = row - r, x = col - c;
-        // Corners as (row, col) offsets from the cell's north-west corner, and the point's weights.
-        int[] dr, dc;
-        double[] weight;
-        if (Triangulation.splitsNorthWestToSouthEast(r, c)) {
-            if (x >= y) { // NW, NE, SE
-                dr = new int[] {0, 0, 1};
-                dc = new int[] {0, 1, 1};
-                weight = new double[] {1 - x, x - y, y};
-            } else { // NW, SE, SW
-                dr = new int[] {0, 1, 1};
-                dc = new int[] {0, 1, 0};
-                weight = new double[] {1 - y, x, y - x};
-            }
-        } else if (x + y <= 1) { // NW, NE, SW
-            dr = new int[] {0, 0, 1};
-            dc = new int[] {0, 1, 0};
-            weight = new double[] {1 - x - y, x, y};
-        } else { // NE, SE, SW
-            dr = new int[] {0, 1, 1};
-            dc = new int[] {1, 1, 0};
-            weight = new double[] {1 - y, x + y - 1, 1 - x};
-        }
+        boolean nwToSe = Triangulation.splitsNorthWestToSouthEast(r, c);
+        int triangle = Triangulation.triangleHolding(nwToSe, y, x);
         double elevation = 0;
         for (int k = 0; k < 3; k++) {
-            surface.position(r + dr[k], c + dc[k], corners[k]);
-            elevation += weight[k] * surface.elevation(r + dr[k], c + dc[k]);
+            int corner = Triangulation.corner(nwToSe, triangle, k), cr = r + (corner >> 1), cc = c + (corner & 1);
+            surface.position(cr, cc, corners[k]);
+            elevation += cornerWeight(nwToSe, triangle, corner, y, x) * surface.elevation(cr, cc);
         }
         double ax = corners[1][0] - corners[0][0], ay = corners[1][1] - corners[0][1], az = corners[1][2] - corners[0][2];
         double bx = corners[2][0] - corners[0][0], by = corners[2][1] - corners[0][1], bz = corners[2][2] - corners[0][2];
@@ -165,5 +146,22 @@ public final class RayCastReference {
                 : new double[] {nx / len * Math.signum(nz == 0 ? 1 : nz), ny / len * Math.signum(nz == 0 ? 1 : nz),
                 Math.abs(nz) / len};
         return shading.argb(elevation, normal, t);
+    }
+
+    /**
+     * The barycentric weight of a cell corner ({@link Triangulation#NW}…{@link Triangulation#SE}) at a point (south and
+     * east fractions of the cell) of the triangle holding it.
+     */
+    static double cornerWeight(boolean nwToSe, int triangle, int corner, double south, double east) {
+        if (nwToSe) {
+            if (triangle == Triangulation.NORTH) { // NW, NE, SE
+                return corner == Triangulation.NW ? 1 - east : corner == Triangulation.NE ? east - south : south;
+            }
+            return corner == Triangulation.NW ? 1 - south : corner == Triangulation.SW ? south - east : east; // NW, SW, SE
+        }
+        if (triangle == Triangulation.NORTH) { // NW, NE, SW
+            return corner == Triangulation.NW ? 1 - east - south : corner == Triangulation.NE ? east : south;
+        }
+        return corner == Triangulation.NE ? 1 - south : corner == Triangulation.SE ? east + south - 1 : 1 - east; // NE, SE, SW
     }
 }

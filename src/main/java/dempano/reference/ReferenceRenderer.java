@@ -173,25 +173,17 @@ public final class ReferenceRenderer {
             half = which;
             // Corners: NW, NE, SW, SE.
             boolean nwse = Triangulation.splitsNorthWestToSouthEast(r, c);
-            int[][] corners;
-            if (nwse) {
-                corners = which == 0 ? NWSE_UPPER : NWSE_LOWER;
-            } else {
-                corners = which == 0 ? NESW_UPPER : NESW_LOWER;
-            }
             for (int k = 0; k < 3; k++) {
-                vr[k] = r + corners[k][0];
-                vc[k] = c + corners[k][1];
+                int corner = Triangulation.corner(nwse, which, k);
+                vr[k] = r + (corner >> 1);
+                vc[k] = c + (corner & 1);
                 s.position(vr[k], vc[k], vp[k]);
                 vf[k] = normE * vp[k][0] + normN * vp[k][1];
             }
         }
 
-        // Triangles as (row, col) offsets of their corners from the cell's north-west corner.
-        private static final int[][] NWSE_UPPER = {{0, 0}, {0, 1}, {1, 1}};  // NW, NE, SE: north and east edges
-        private static final int[][] NWSE_LOWER = {{0, 0}, {1, 0}, {1, 1}};  // NW, SW, SE: west and south edges
-        private static final int[][] NESW_UPPER = {{0, 0}, {0, 1}, {1, 0}};  // NW, NE, SW: north and west edges
-        private static final int[][] NESW_LOWER = {{0, 1}, {1, 1}, {1, 0}};  // NE, SE, SW: east and south edges
+        // Triangle 0 (Triangulation.NORTH) holds the cell's north edge, 1 (SOUTH) its south edge; of an NW–SE cell the
+        // north one has the east edge too, the south one the west edge; of an NE–SW cell the other way round.
 
         private static boolean positive(double f) {
             return f >= 0;
@@ -352,7 +344,7 @@ public final class ReferenceRenderer {
                 }
                 nc = c;
                 boolean wantSouth = nr < r;
-                // Halves with a south edge: NWSE lower (1), NESW lower (1); with a north edge: upper (0).
+                // Halves with a south edge: SOUTH (1) of either split; with a north edge: NORTH (0).
                 nh = wantSouth ? 1 : 0;
             } else {
                 if (entryC0 == c) {
@@ -363,7 +355,7 @@ public final class ReferenceRenderer {
                 nr = r;
                 boolean wantEast = nc < c;
                 boolean nwse = Triangulation.splitsNorthWestToSouthEast(nr, nc);
-                // East edge: NWSE upper (0), NESW lower (1). West edge: NWSE lower (1), NESW upper (0).
+                // East edge: NW–SE's NORTH (0), NE–SW's SOUTH (1). West edge: NW–SE's SOUTH (1), NE–SW's NORTH (0).
                 nh = wantEast ? (nwse ? 0 : 1) : (nwse ? 1 : 0);
             }
             if (nr < 0 || nc < 0 || nr >= s.rows - 1 || nc >= s.cols - 1) {
@@ -407,8 +399,7 @@ public final class ReferenceRenderer {
             r = Math.max(0, Math.min(s.rows - 2, r));
             c = Math.max(0, Math.min(s.cols - 2, c));
             double y = s.eyeRow - r, x = s.eyeCol - c;
-            boolean nwse = Triangulation.splitsNorthWestToSouthEast(r, c);
-            int which = nwse ? (x >= y ? 0 : 1) : (x + y <= 1 ? 0 : 1);
+            int which = Triangulation.triangleHolding(Triangulation.splitsNorthWestToSouthEast(r, c), y, x);
             // The triangle containing the foot, unless the plane only grazes it (the foot on a vertex or
             // an edge): then the walk could set off backwards. Otherwise the neighbour whose cut
             // straddles the eye and reaches farthest ahead.

@@ -6,7 +6,6 @@ import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
 import dempano.panorama.RayProbe;
-import dempano.terrain.LevelOfDetail;
 import dempano.terrain.Triangulation;
 import dempano.util.Floors;
 import dempano.util.SmallAngles;
@@ -280,24 +279,21 @@ public final class TerrainRayProbe implements RayProbe {
      * recompile a large method (0.5–1.1 s of server compiler time in a JVM's first four renders).
      */
     private double cellHit(double e, double n, double u, int r, int c, WalkTables w) {
-        double[][] corner = w.corners; // nw, ne, sw, se
+        double[][] corner = w.corners; // Triangulation.NW, NE, SW, SE
         for (int k = 0; k < 4; k++) {
             vertex(r + (k >> 1), c + (k & 1), w.vertexKey, w.vertexAt, corner[k]);
         }
         boolean nwToSe = Triangulation.splitsNorthWestToSouthEast(r, c);
         double best = Double.POSITIVE_INFINITY;
         for (int k = 0; k < 2; k++) {
-            int[] t = nwToSe ? NW_SE_TRIANGLES[k] : NE_SW_TRIANGLES[k];
-            double hit = rayTriangle(e, n, u, corner[t[0]], corner[t[1]], corner[t[2]], w.tri);
+            double hit = rayTriangle(e, n, u, corner[Triangulation.corner(nwToSe, k, 0)],
+                    corner[Triangulation.corner(nwToSe, k, 1)], corner[Triangulation.corner(nwToSe, k, 2)], w.tri);
             if (hit < best) { // (not Math.min, which the client compiler calls: a hit is positive or +∞, never NaN)
                 best = hit;
             }
         }
         return best;
     }
-
-    /** A cell's two triangles as corners (0 nw, 1 ne, 2 sw, 3 se), as {@link Triangulation} splits it. */
-    private static final int[][] NW_SE_TRIANGLES = {{0, 1, 3}, {0, 3, 2}}, NE_SW_TRIANGLES = {{0, 1, 2}, {1, 3, 2}};
 
     /** Slots of {@link #trianglesBetween}'s cell table (a power of two). */
     private static final int CACHE_SLOTS = 64;
@@ -633,7 +629,7 @@ public final class TerrainRayProbe implements RayProbe {
         double num = z + SECOND_ECCENTRICITY_SQ * Ellipsoid.B_METRES * st * st * st;
         double den = p - Ellipsoid.E2 * Ellipsoid.A_METRES * ct * ct * ct;
         double r = Math.sqrt(num * num + den * den), sinLat = num / r, cosLat = den / r;
-        double nRadius = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat);
+        double nRadius = Ellipsoid.primeVerticalRadiusOfSinMetres(sinLat);
         double height = p * cosLat + z * sinLat - Ellipsoid.A_METRES * Ellipsoid.A_METRES / nRadius;
         // Latitude and longitude as angles from the eye's (atan2's fdlibm call is native in JDK 17, and this
         // runs a dozen times per probed pixel): within 1e-15 rad of atan2, SmallAnglesTest.
@@ -658,7 +654,7 @@ public final class TerrainRayProbe implements RayProbe {
         point[COS_LAT] = cosLat;
         point[SIN_LON] = sinLon;
         point[COS_LON] = cosLon;
-        point[N_RADIUS] = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat * sinLat);
+        point[N_RADIUS] = Ellipsoid.primeVerticalRadiusOfSinMetres(sinLat);
     }
 
     /**
@@ -673,7 +669,7 @@ public final class TerrainRayProbe implements RayProbe {
         double rise = cosLat * (cosLon * dir[0] + sinLon * dir[1]) + sinLat * dir[2];
         double east = -sinLon * dir[0] + cosLon * dir[1];
         double north = -sinLat * (cosLon * dir[0] + sinLon * dir[1]) + cosLat * dir[2];
-        double mRadius = nRadius * (1 - Ellipsoid.E2) / (1 - Ellipsoid.E2 * sinLat * sinLat);
+        double mRadius = Ellipsoid.meridianRadiusOfSinMetres(sinLat);
         double ipd = mosaic.intervalsPerDegree();
         point[RISE] = rise;
         point[ROW_RATE] = -Math.toDegrees(north / (mRadius + height)) * ipd;
@@ -704,7 +700,7 @@ public final class TerrainRayProbe implements RayProbe {
         }
         double v = row - r, w = col - c; // south and east fractions
         double nw = height(r, c), ne = height(r, c + 1), sw = height(r + 1, c), se = height(r + 1, c + 1);
-        double surface = LevelOfDetail.interpolate(nw, ne, sw, se, w, v, Triangulation.splitsNorthWestToSouthEast(r, c));
+        double surface = Triangulation.heightIn(r, c, nw, ne, sw, se, v, w);
         return heightMetres - surface - lift;
     }
 

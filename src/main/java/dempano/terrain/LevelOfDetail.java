@@ -55,7 +55,7 @@ public final class LevelOfDetail {
         double[] dev = new double[levels + 1];
         // Coarse cell by coarse cell (a sample on a cell's east or south edge belongs to the next cell, except on
         // the patch's own edge), with the cell's corners and split read once: the same arithmetic, value for
-        // value, as interpolate() at every sample (the largest of the same numbers), without a division per sample.
+        // value, as Triangulation.height at every sample (the largest of the same numbers), without a division per sample.
         double[] fraction = new double[intervals + 1];
         for (int level = 1; level <= levels; level++) {
             int s = 1 << level, cells = intervals / s;
@@ -75,19 +75,9 @@ public final class LevelOfDetail {
                     for (int a = 0; a <= lastA; a++) {
                         double v = fraction[a];
                         int at = (rn + a) * stride + cw;
-                        if (nwToSe) {
-                            for (int b = 0; b <= lastB; b++) {
-                                double u = fraction[b];
-                                double coarse = u >= v ? nw + u * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + u * (se - sw);
-                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
-                            }
-                        } else {
-                            for (int b = 0; b <= lastB; b++) {
-                                double u = fraction[b];
-                                double coarse = u + v <= 1 ? nw + u * (ne - nw) + v * (sw - nw)
-                                        : se + (1 - u) * (sw - se) + (1 - v) * (ne - se);
-                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
-                            }
+                        for (int b = 0; b <= lastB; b++) {
+                            double coarse = Triangulation.height(nwToSe, nw, ne, sw, se, v, fraction[b]);
+                            worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
                         }
                     }
                 }
@@ -107,19 +97,6 @@ public final class LevelOfDetail {
     public static double chordSagMetres(double cellSideMetres, double refractionCoefficient) {
         double diagonal = Math.sqrt(2) * cellSideMetres;
         return diagonal * diagonal / (8 * 6_356_000.0) * Math.max(1, 1 - refractionCoefficient);
-    }
-
-    /**
-     * Height on a cell's two triangles.
-     *
-     * @param u east fraction [0, 1]
-     * @param v south fraction [0, 1]
-     */
-    public static double interpolate(double nw, double ne, double sw, double se, double u, double v, boolean nwToSe) {
-        if (nwToSe) {
-            return u >= v ? nw + u * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + u * (se - sw);
-        }
-        return u + v <= 1 ? nw + u * (ne - nw) + v * (sw - nw) : se + (1 - u) * (sw - se) + (1 - v) * (ne - se);
     }
 
     /**

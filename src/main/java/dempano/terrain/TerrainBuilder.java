@@ -841,7 +841,7 @@ public final class TerrainBuilder {
             footCos = new double[sinLat.length];
             footSin = new double[sinLat.length];
             for (int r = 0; r < sinLat.length; r++) {
-                double n = Ellipsoid.A_METRES / Math.sqrt(1 - Ellipsoid.E2 * sinLat[r] * sinLat[r]);
+                double n = Ellipsoid.primeVerticalRadiusOfSinMetres(sinLat[r]);
                 footCos[r] = (n + 0.0) * cosLat[r];
                 footSin[r] = (n * (1 - Ellipsoid.E2) + 0.0) * sinLat[r];
             }

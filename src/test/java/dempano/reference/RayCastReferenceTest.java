@@ -176,4 +176,30 @@ class RayCastReferenceTest {
         // A ray exactly through a silhouette vertex may be decided either way by rounding: at most a few.
         assertTrue(mismatch + disagree <= w * h / 20_000 + 2, report);
     }
+
+    @Test
+    void theShadedElevationIsTheDrawnSurfacesHeight() {
+        // The corner weights shade() interpolates the elevation with reproduce the drawn surface's height
+        // (Triangulation.height) and are a partition of one, non-negative inside the triangle holding the point.
+        java.util.Random random = new java.util.Random(3);
+        for (boolean nwToSe : new boolean[] {true, false}) {
+            for (int i = 0; i < 2000; i++) {
+                double[] h = {random.nextDouble() * 3000, random.nextDouble() * 3000, random.nextDouble() * 3000,
+                        random.nextDouble() * 3000};
+                double south = random.nextDouble(), east = random.nextDouble();
+                int triangle = dempano.terrain.Triangulation.triangleHolding(nwToSe, south, east);
+                double sum = 0, elevation = 0;
+                for (int k = 0; k < 3; k++) {
+                    int corner = dempano.terrain.Triangulation.corner(nwToSe, triangle, k);
+                    double w = RayCastReference.cornerWeight(nwToSe, triangle, corner, south, east);
+                    org.junit.jupiter.api.Assertions.assertTrue(w >= -1e-12, "weight " + w);
+                    sum += w;
+                    elevation += w * h[corner];
+                }
+                org.junit.jupiter.api.Assertions.assertEquals(1, sum, 1e-12);
+                org.junit.jupiter.api.Assertions.assertEquals(
+                        dempano.terrain.Triangulation.height(nwToSe, h[0], h[1], h[2], h[3], south, east), elevation, 1e-9);
+            }
+        }
+    }
 }

@@ -64,14 +64,14 @@ class LevelOfDetailTest {
     @Test
     void interpolationIsExactAtCornersAndLinearOnEachTriangle() {
         for (boolean split : new boolean[] {true, false}) {
-            assertEquals(1, LevelOfDetail.interpolate(1, 2, 3, 4, 0, 0, split), 1e-12);
-            assertEquals(2, LevelOfDetail.interpolate(1, 2, 3, 4, 1, 0, split), 1e-12);
-            assertEquals(3, LevelOfDetail.interpolate(1, 2, 3, 4, 0, 1, split), 1e-12);
-            assertEquals(4, LevelOfDetail.interpolate(1, 2, 3, 4, 1, 1, split), 1e-12);
+            assertEquals(1, Triangulation.height(split, 1, 2, 3, 4, 0, 0), 1e-12);
+            assertEquals(2, Triangulation.height(split, 1, 2, 3, 4, 0, 1), 1e-12);
+            assertEquals(3, Triangulation.height(split, 1, 2, 3, 4, 1, 0), 1e-12);
+            assertEquals(4, Triangulation.height(split, 1, 2, 3, 4, 1, 1), 1e-12);
         }
         // Not a plane (nw + se ≠ ne + sw): the centre lies on the diagonal that splits the cell.
-        assertEquals((0 + 10) / 2.0, LevelOfDetail.interpolate(0, 0, 0, 10, 0.5, 0.5, true), 1e-12);
-        assertEquals((0 + 0) / 2.0, LevelOfDetail.interpolate(0, 0, 0, 10, 0.5, 0.5, false), 1e-12);
+        assertEquals((0 + 10) / 2.0, Triangulation.height(true, 0, 0, 0, 10, 0.5, 0.5), 1e-12);
+        assertEquals((0 + 0) / 2.0, Triangulation.height(false, 0, 0, 0, 10, 0.5, 0.5), 1e-12);
     }
 
     @Test
@@ -281,9 +281,9 @@ class LevelOfDetailTest {
                     int cj = Math.min(j / s, intervals / s - 1);
                     double u = (j - cj * s) / (double) s;
                     int rn = row0 + ci * s, rs = rn + s, cw = col0 + cj * s, ce = cw + s;
-                    double coarse = LevelOfDetail.interpolate(heights[rn * stride + cw], heights[rn * stride + ce],
-                            heights[rs * stride + cw], heights[rs * stride + ce], u, v,
-                            Triangulation.splitsNorthWestToSouthEast(ci, cj));
+                    double coarse = Triangulation.height(Triangulation.splitsNorthWestToSouthEast(ci, cj),
+                            heights[rn * stride + cw], heights[rn * stride + ce], heights[rs * stride + cw],
+                            heights[rs * stride + ce], v, u);
                     worst = Math.max(worst, Math.abs(heights[(row0 + i) * stride + col0 + j] - coarse));
                 }
             }

@@ -35,4 +35,52 @@ class TriangulationHeightTest {
             assertTrue(Double.isNaN(Triangulation.heightIn(0, col, Double.NaN, ne, sw, se, 0.1, 0.1)), "a void corner");
         }
     }
+
+    /** A cell's corner as (south, east) fractions: its row and column offsets. */
+    private static double[] at(int corner) {
+        return new double[] {corner >> 1, corner & 1};
+    }
+
+    @Test
+    void eachTriangleHoldsItsOwnCornersAndThePointsInsideThem() {
+        // Corners of random heights: a point is held by the triangle whose corners' convex hull it lies in (checked
+        // by the signed areas of its sub-triangles), and the height there is the plane through those three corners.
+        java.util.Random random = new java.util.Random(7);
+        for (boolean nwToSe : new boolean[] {true, false}) {
+            double[] h = {random.nextDouble() * 100, random.nextDouble() * 100, random.nextDouble() * 100,
+                    random.nextDouble() * 100};
+            for (int triangle = 0; triangle < 2; triangle++) {
+                java.util.Set<Integer> corners = new java.util.HashSet<>();
+                for (int k = 0; k < 3; k++) {
+                    corners.add(Triangulation.corner(nwToSe, triangle, k));
+                }
+                assertEquals(3, corners.size(), "three distinct corners");
+                // The diagonal's two corners are in both triangles; NW–SE's diagonal joins NW and SE.
+                int[] diagonal = nwToSe ? new int[] {Triangulation.NW, Triangulation.SE} : new int[] {Triangulation.NE, Triangulation.SW};
+                assertTrue(corners.contains(diagonal[0]) && corners.contains(diagonal[1]), "the diagonal is an edge");
+                int north = triangle == Triangulation.NORTH ? Triangulation.NW : Triangulation.SW;
+                assertTrue(corners.contains(north) && corners.contains(north + 1), "the " + (triangle == 0 ? "north" : "south") + " edge");
+            }
+            for (int i = 0; i < 2000; i++) {
+                double south = random.nextDouble(), east = random.nextDouble();
+                int triangle = Triangulation.triangleHolding(nwToSe, south, east);
+                double[] a = at(Triangulation.corner(nwToSe, triangle, 0)), b = at(Triangulation.corner(nwToSe, triangle, 1)),
+                        c = at(Triangulation.corner(nwToSe, triangle, 2));
+                double whole = area(a, b, c), wa = area(new double[] {south, east}, b, c) / whole,
+                        wb = area(a, new double[] {south, east}, c) / whole, wc = 1 - wa - wb;
+                assertTrue(wa >= -1e-12 && wb >= -1e-12 && wc >= -1e-12, "inside the triangle that holds it");
+                double plane = wa * h[Triangulation.corner(nwToSe, triangle, 0)] + wb * h[Triangulation.corner(nwToSe, triangle, 1)]
+                        + wc * h[Triangulation.corner(nwToSe, triangle, 2)];
+                assertEquals(plane, Triangulation.height(nwToSe, h[0], h[1], h[2], h[3], south, east), 1e-9);
+            }
+        }
+        // The cell's own split: row + col even is NW–SE.
+        assertEquals(Triangulation.height(true, 0, 0, 0, 10, 0.5, 0.5), Triangulation.heightIn(2, 4, 0, 0, 0, 10, 0.5, 0.5));
+        assertEquals(Triangulation.height(false, 0, 0, 0, 10, 0.5, 0.5), Triangulation.heightIn(2, 3, 0, 0, 0, 10, 0.5, 0.5));
+    }
+
+    /** Signed area of triangle (a, b, c), points as (south, east). */
+    private static double area(double[] a, double[] b, double[] c) {
+        return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+    }
 }
