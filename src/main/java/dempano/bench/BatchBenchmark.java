@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import dempano.util.Quantiles;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
@@ -108,7 +109,7 @@ public final class BatchBenchmark implements Callable<Integer> {
             batchWhole[round] = run(cmd, tmp) / viewpoints;
             double[] rows = rowSeconds(out.resolve("results.csv"));
             batchRowMean[round] = Arrays.stream(rows).average().orElse(Double.NaN);
-            batchRowWarmMedian[round] = median(Arrays.copyOfRange(rows, 1, rows.length));
+            batchRowWarmMedian[round] = Quantiles.median(Arrays.copyOfRange(rows, 1, rows.length));
             System.err.printf(Locale.ROOT, "bench-batch: round %d batch: %.2f s per panorama (whole process / %d)%n",
                     round + 1, batchWhole[round], viewpoints);
             for (boolean resident : new boolean[] {false, true}) {
@@ -128,7 +129,7 @@ public final class BatchBenchmark implements Callable<Integer> {
                     run(List.of(dempano.toString(), "resident", "stop"), tmp, env);
                 }
                 (resident ? residentMean : singleMean)[round] = Arrays.stream(single).average().orElse(Double.NaN);
-                (resident ? residentMedian : singleMedian)[round] = median(single);
+                (resident ? residentMedian : singleMedian)[round] = Quantiles.median(single);
                 System.err.printf(Locale.ROOT, "bench-batch: round %d %s: %.2f s per panorama (mean of %d processes)%n",
                         round + 1, resident ? "resident" : "single", (resident ? residentMean : singleMean)[round], viewpoints);
             }
@@ -138,14 +139,14 @@ public final class BatchBenchmark implements Callable<Integer> {
                 + "filled by its first process%n%n", viewpoints, latDeg, lonDeg, settings, rounds);
         System.out.println("| way | seconds per panorama |");
         System.out.println("|---|---:|");
-        System.out.printf(Locale.ROOT, "| one process per panorama (installed start script), mean | %.2f |%n", median(singleMean));
-        System.out.printf(Locale.ROOT, "| one process per panorama, median | %.2f |%n", median(singleMedian));
+        System.out.printf(Locale.ROOT, "| one process per panorama (installed start script), mean | %.2f |%n", Quantiles.median(singleMean));
+        System.out.printf(Locale.ROOT, "| one process per panorama, median | %.2f |%n", Quantiles.median(singleMedian));
         System.out.printf(Locale.ROOT, "| one start script per panorama, DEMPANO_RESIDENT=on (the first starts it), mean | %.2f |%n",
-                median(residentMean));
-        System.out.printf(Locale.ROOT, "| one start script per panorama, DEMPANO_RESIDENT=on, median | %.2f |%n", median(residentMedian));
-        System.out.printf(Locale.ROOT, "| `dempano batch`, whole process / %d | %.2f |%n", viewpoints, median(batchWhole));
-        System.out.printf(Locale.ROOT, "| `dempano batch`, rows' own time, mean (cold first row included) | %.2f |%n", median(batchRowMean));
-        System.out.printf(Locale.ROOT, "| `dempano batch`, rows 2–%d, median | %.2f |%n", viewpoints, median(batchRowWarmMedian));
+                Quantiles.median(residentMean));
+        System.out.printf(Locale.ROOT, "| one start script per panorama, DEMPANO_RESIDENT=on, median | %.2f |%n", Quantiles.median(residentMedian));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, whole process / %d | %.2f |%n", viewpoints, Quantiles.median(batchWhole));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, rows' own time, mean (cold first row included) | %.2f |%n", Quantiles.median(batchRowMean));
+        System.out.printf(Locale.ROOT, "| `dempano batch`, rows 2–%d, median | %.2f |%n", viewpoints, Quantiles.median(batchRowWarmMedian));
         return 0;
     }
 
@@ -175,12 +176,6 @@ public final class BatchBenchmark implements Callable<Integer> {
                 CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).get())) {
             return p.getRecords().stream().mapToDouble((CSVRecord r) -> Double.parseDouble(r.get("seconds"))).toArray();
         }
-    }
-
-    static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
     }
 
     private static void deleteTree(Path dir) throws IOException {

@@ -81,8 +81,7 @@ public final class CameraAccuracyReport implements java.util.concurrent.Callable
     record Row(String scene, double lensMm, int pixels, double[] relativeErrors, long skyMismatch,
                double glSeconds, double glCpuSeconds, double referenceSeconds, double referenceCpuSeconds) {
         double quantile(double q) {
-            return relativeErrors.length == 0 ? Double.NaN
-                    : relativeErrors[Math.min(relativeErrors.length - 1, (int) (q * relativeErrors.length))];
+            return dempano.util.Quantiles.ofSorted(relativeErrors, q);
         }
 
         double shareOver(double threshold) {

@@ -24,6 +24,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import dempano.util.Quantiles;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -476,11 +477,11 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
             double[] alt = rows.stream().filter(r -> measured(r.free()))
                     .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES)).toArray();
             b.append(String.format(Locale.ROOT, "| %s | %d | %.0f %% | %.0f %% | %.2f° | %.2f %% | %.0f %% | %d | %s | %s | %s |%n",
-                    refined ? "refined" : "pinned (assumed eye)", n, 100.0 * within05 / n, 100.0 * within2 / n, median(he),
-                    100 * median(fe), 100.0 * unsure / n, confidentWrong,
+                    refined ? "refined" : "pinned (assumed eye)", n, 100.0 * within05 / n, 100.0 * within2 / n, Quantiles.median(he),
+                    100 * Quantiles.median(fe), 100.0 * unsure / n, confidentWrong,
                     refined ? String.format(Locale.ROOT, "%d (%.0f %%)", alt.length, 100.0 * alt.length / n) : "–",
-                    refined ? String.format(Locale.ROOT, "%.1f m", median(alt)) : "–",
-                    refined ? String.format(Locale.ROOT, "%.2f s", median(rows.stream().mapToDouble(AltitudeRow::seconds).toArray())) : "–"));
+                    refined ? String.format(Locale.ROOT, "%.1f m", Quantiles.median(alt)) : "–",
+                    refined ? String.format(Locale.ROOT, "%.2f s", Quantiles.median(rows.stream().mapToDouble(AltitudeRow::seconds).toArray())) : "–"));
         }
         long far = rows.stream().filter(r -> r.skylineMetres() >= NEAR_SKYLINE_M).count();
         b.append(String.format(Locale.ROOT, "%nAltitude estimates by skyline distance: %s.%n",
@@ -491,7 +492,7 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
                     double[] sig = rs.stream().filter(r -> Double.isFinite(r.free().altitudeSigmaMetres()))
                             .mapToDouble(r -> r.free().altitudeSigmaMetres()).toArray();
                     return String.format(Locale.ROOT, "skyline %s 1 km: %d of %d photos, median %.1f m, median standard error %.1f m",
-                            isFar ? "≥" : "<", a.length, rs.size(), median(a), median(sig));
+                            isFar ? "≥" : "<", a.length, rs.size(), Quantiles.median(a), Quantiles.median(sig));
                 }).collect(java.util.stream.Collectors.joining("; "))));
         double[] z = rows.stream().filter(r -> measured(r.free()))
                 .mapToDouble(r -> Math.abs(r.free().altitudeOffsetMetres() - ALTITUDE_TEST_METRES) / r.free().altitudeSigmaMetres())
@@ -510,7 +511,7 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
                         + " %d of %d kept offsets are within 2 standard errors of the truth (median |error| / standard error %.2f;"
                         + " 0.67 if it were a calibrated normal one), and %d are more than 5 m off.%n",
                 OrientationEstimator.ALTITUDE_RESIDUAL_FLOOR_PX, OrientationEstimator.ALTITUDE_JACKKNIFE_BLOCKS, within2, z.length,
-                median(z), off5));
+                Quantiles.median(z), off5));
         return b.toString();
     }
 
@@ -541,15 +542,6 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
 
     /** Per scene: the OpenGL panorama's wall and CPU seconds, the CPU reference's wall seconds. */
     record Timing(List<Double> gl, List<Double> glCpu, List<Double> ref) {
-    }
-
-    static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        if (s.length == 0) {
-            return Double.NaN;
-        }
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
     }
 
     /**
@@ -588,9 +580,9 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
             long unsure = rs.stream().filter(r -> r.est().unsure()).count();
             long confidentWrong = rs.stream().filter(r -> !r.est().unsure() && r.headingError() > 5).count();
             b.append(String.format(Locale.ROOT, "| %s | %d | %.0f %% | %.0f %% | %.2f° | %.2f %% | %.2f° | %.2f° | %.0f %% | %d | %.2f s |%n",
-                    step.label, n, 100.0 * within05 / n, 100.0 * within2 / n, median(he), 100 * median(fe), median(pe),
-                    median(re), 100.0 * unsure / n, confidentWrong,
-                    median(rs.stream().mapToDouble(Row::seconds).toArray())));
+                    step.label, n, 100.0 * within05 / n, 100.0 * within2 / n, Quantiles.median(he), 100 * Quantiles.median(fe), Quantiles.median(pe),
+                    Quantiles.median(re), 100.0 * unsure / n, confidentWrong,
+                    Quantiles.median(rs.stream().mapToDouble(Row::seconds).toArray())));
         }
         double[] match = rows.stream().mapToDouble(Row::seconds).toArray();
         double[] glWarm = gl.subList(1, gl.size()).stream().mapToDouble(Double::doubleValue).toArray();
@@ -599,22 +591,22 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
                         + " matched against (%.0f ppd, %.0f km, no exact distances) took %.1f s for the first scene (GL start"
                         + " included) and median %.1f s afterwards. Warm total per photo: about %.1f s. The CPU reference"
                         + " panoramas that make the photos took median %.1f s each (not part of the cost of a photo).%n",
-                match[0], median(Arrays.copyOfRange(match, 1, match.length)),
+                match[0], Quantiles.median(Arrays.copyOfRange(match, 1, match.length)),
                 Arrays.stream(match).skip(1).max().orElse(Double.NaN),
-                ESTIMATOR_PPD, RANGE_METRES / 1000, gl.get(0), median(glWarm),
-                median(glWarm) + median(Arrays.copyOfRange(match, 1, match.length)),
-                median(ref.stream().mapToDouble(Double::doubleValue).toArray())));
+                ESTIMATOR_PPD, RANGE_METRES / 1000, gl.get(0), Quantiles.median(glWarm),
+                Quantiles.median(glWarm) + Quantiles.median(Arrays.copyOfRange(match, 1, match.length)),
+                Quantiles.median(ref.stream().mapToDouble(Double::doubleValue).toArray())));
         double[] matchCpu = rows.stream().mapToDouble(Row::cpuSeconds).toArray();
-        double glCpuWarm = median(glCpu.subList(1, glCpu.size()).stream().mapToDouble(Double::doubleValue).toArray());
+        double glCpuWarm = Quantiles.median(glCpu.subList(1, glCpu.size()).stream().mapToDouble(Double::doubleValue).toArray());
         b.append(String.format(Locale.ROOT, "%nCPU time (process, all threads): matching median %.2f s per photo after the"
                         + " first, the OpenGL panorama median %.1f s after the first scene; warm total about %.1f CPU s per"
                         + " photo (2 cores: at least half of it in wall time on an idle machine).%n",
-                median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length)), glCpuWarm,
-                glCpuWarm + median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length))));
+                Quantiles.median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length)), glCpuWarm,
+                glCpuWarm + Quantiles.median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length))));
         b.append(String.format(Locale.ROOT, "%nPose draws rejected because the skyline did not cross at least 80 %% of the"
                 + " photo's columns: %d; because the photo showed terrain on a missing tile or within about 1 km of one: %d.%n",
                 rejected.skyline(), rejected.missingData()));
-        b.append(reading(rows, median(glWarm) + median(Arrays.copyOfRange(match, 1, match.length)), run));
+        b.append(reading(rows, Quantiles.median(glWarm) + Quantiles.median(Arrays.copyOfRange(match, 1, match.length)), run));
         return b.toString();
     }
 
@@ -683,7 +675,7 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
         double[] fovHazy = rows.stream().filter(r -> r.step() == steps[1] && !Double.isNaN(r.est().hfovDeg()))
                 .mapToDouble(r -> Math.abs(r.est().hfovDeg() / r.hfovDeg() - 1)).toArray();
         b.append(String.format(Locale.ROOT, "- Median FOV error: clear %.2f %%, hazy %.2f %% (target ≤ 2 %%: %s).%n",
-                100 * median(fovClear), 100 * median(fovHazy), median(fovClear) <= 0.02 && median(fovHazy) <= 0.02 ? "met" : "not met"));
+                100 * Quantiles.median(fovClear), 100 * Quantiles.median(fovHazy), Quantiles.median(fovClear) <= 0.02 && Quantiles.median(fovHazy) <= 0.02 ? "met" : "not met"));
         b.append(String.format(Locale.ROOT, "- Warm time per photo (panorama render + matching): about %.1f s (target < 5 s: %s);"
                 + " the first photo of a process adds the GL start and JIT.%n", warmSeconds, warmSeconds < 5 ? "met" : "not met"));
         return b.toString();

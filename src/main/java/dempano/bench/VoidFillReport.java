@@ -39,9 +39,7 @@ public final class VoidFillReport {
             if (e.length == 0) {
                 return new Errors(0, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN);
             }
-            double[] s = e.clone();
-            Arrays.sort(s);
-            double median = s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+            double median = dempano.util.Quantiles.median(e);
             double sum = 0, abs = 0, sq = 0, worst = 0;
             int within = 0;
             for (double x : e) {

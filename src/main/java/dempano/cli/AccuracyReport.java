@@ -475,9 +475,7 @@ public final class AccuracyReport implements java.util.concurrent.Callable<Integ
                 ape.add(Math.abs(s.seenDistanceMetres() - s.slantMetres()) / s.slantMetres());
             }
             var u = dempano.summits.DistanceMetrics.of(estAll, truthAll);
-            ape.sort(null);
-            double medianApe = ape.isEmpty() ? Double.NaN : ape.size() % 2 == 1 ? ape.get(ape.size() / 2)
-                    : (ape.get(ape.size() / 2 - 1) + ape.get(ape.size() / 2)) / 2;
+            double medianApe = dempano.util.Quantiles.median(ape.stream().mapToDouble(Double::doubleValue).toArray());
             untruncated.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %.0f | %s | %s | %.2e | %.6f |", scene.name(), shown,
                     noReading, u.count(), u.rmseMetres(), pct(u.mape()), pct(medianApe), u.rse(), u.r2()));
             for (double share : u.shareUnder()) {

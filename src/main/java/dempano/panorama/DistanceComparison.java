@@ -1,5 +1,6 @@
 package dempano.panorama;
 
+import dempano.util.Quantiles;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -87,9 +88,9 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
                 off++;
             }
         }
-        return new DistanceComparison(n, quantile(sorted, 0.5), quantile(sorted, 0.95), quantile(sorted, 0.99),
+        return new DistanceComparison(n, Quantiles.ofSorted(sorted, 0.5), Quantiles.ofSorted(sorted, 0.95), Quantiles.ofSorted(sorted, 0.99),
                 n == 0 ? Double.NaN : sorted[n - 1], n == 0 ? Double.NaN : over / (double) n, mismatch,
-                sumAbs / (double) widthPx, maxAbs, off / (double) widthPx, quantile(farSorted, 0.5), quantile(farSorted, 0.99),
+                sumAbs / (double) widthPx, maxAbs, off / (double) widthPx, Quantiles.ofSorted(farSorted, 0.5), Quantiles.ofSorted(farSorted, 0.99),
                 nFar == 0 ? Double.NaN : farOver / (double) nFar);
     }
 
@@ -152,7 +153,7 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
             float[] sorted = Arrays.copyOf(rel[k], n[k]);
             Arrays.sort(sorted);
             out.add(new IncidenceBin(lowerDeg[k], k + 1 < bins ? lowerDeg[k + 1] : Double.POSITIVE_INFINITY, n[k],
-                    quantile(sorted, 0.5), quantile(sorted, 0.99)));
+                    Quantiles.ofSorted(sorted, 0.5), Quantiles.ofSorted(sorted, 0.99)));
         }
         return out;
     }
@@ -209,7 +210,7 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
             Arrays.sort(ts);
             Arrays.sort(ds);
             Arrays.sort(ss);
-            out.add(new HorizonRow(k, nt, sky, quantile(ts, 0.5), quantile(ds, 0.5), quantile(ss, 0.5), maxAbs));
+            out.add(new HorizonRow(k, nt, sky, Quantiles.ofSorted(ts, 0.5), Quantiles.ofSorted(ds, 0.5), Quantiles.ofSorted(ss, 0.5), maxAbs));
         }
         return out;
     }
@@ -256,16 +257,5 @@ public record DistanceComparison(long comparedPixels, double medianRelative, dou
             }
         }
         return heightPx;
-    }
-
-    /** Quantile of sorted values by linear interpolation between order statistics; NaN if empty. */
-    static double quantile(float[] sorted, double q) {
-        if (sorted.length == 0) {
-            return Double.NaN;
-        }
-        double pos = q * (sorted.length - 1);
-        int i = (int) Math.floor(pos);
-        int j = Math.min(sorted.length - 1, i + 1);
-        return sorted[i] + (pos - i) * (sorted[j] - sorted[i]);
     }
 }
