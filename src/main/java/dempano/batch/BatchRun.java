@@ -72,8 +72,8 @@ public final class BatchRun {
     /**
      * Renders the rows in order, writing {@code results.csv} line by line. A panorama row's files are written on a
      * second thread while the next row renders (at most one row is being written, so at most two panoramas are in
-     * memory); its line goes to {@code results.csv}, and {@link BatchListener#rowFinished} is told, once its files are
-     * in place, before the next row's. Its seconds are those of its own work: rendering, then writing (not the time
+     * memory); its line goes to {@code results.csv}, and {@link BatchListener#rowFinished} is told, on the writer thread
+     * as soon as its files are in place, before the next row's. Its seconds are those of its own work: rendering, then writing (not the time
      * its writing waited for, or overlapped, the next row's rendering).
      *
      * @return the summary; {@link BatchSummary#fatal()} is set when the renderer failed and the rest was skipped
@@ -96,12 +96,12 @@ public final class BatchRun {
         });
         Writing pending = null;
         try (ResultsCsv csv = create(resultsFile)) {
-            quietly(() -> listener.started(rows.size()));
+            tell(() -> listener.started(rows.size()));
             Map<String, String> seen = new HashMap<>(); // collision key → where the id was first
             for (int i = 0; i < rows.size() && !cancelled.get(); i++) {
                 BatchRow row = rows.get(i);
                 int index = i;
-                quietly(() -> listener.rowStarted(row, index));
+                tell(() -> listener.rowStarted(row, index));
                 long start = System.nanoTime();
                 BatchResult result = null;
                 Rendered rendered = null;
@@ -135,7 +135,7 @@ public final class BatchRun {
                 Writing before = pending;
                 pending = null;
                 try {
-                    finish(before, csv, results, resultsFile);
+                    finish(before);
                 } catch (IOException | RuntimeException | Error e) {
                     if (rendered != null) {
                         discard(rendered, e); // results.csv cannot be written: this row is not written either
@@ -143,10 +143,19 @@ public final class BatchRun {
                     throw e;
                 }
                 if (rendered != null) {
+                    // Its line is written by the writer as soon as its files are in place (not after the next row has
+                    // rendered: a batch killed meanwhile lost the line of a complete set).
                     Rendered toWrite = rendered;
-                    pending = new Writing(row, index, renderSeconds, writer.submit(() -> {
+                    pending = new Writing(writer.submit(() -> {
                         long began = System.nanoTime();
-                        return new Written(write(toWrite), seconds(began));
+                        BatchResult written;
+                        try {
+                            written = BatchResult.ok(row, write(toWrite), renderSeconds + seconds(began));
+                        } catch (IOException | RuntimeException | OutOfMemoryError e) {
+                            written = failed(row, e, renderSeconds); // its writing's seconds are not known
+                        }
+                        record(written, index, csv, results, resultsFile);
+                        return null;
                     }));
                     continue;
                 }
@@ -155,12 +164,12 @@ public final class BatchRun {
                     break;
                 }
             }
-            finish(pending, csv, results, resultsFile);
+            finish(pending);
             pending = null;
         } finally {
             if (pending != null) { // results.csv failed: still never leave with a set half written
                 try {
-                    pending.files().get();
+                    pending.recorded().get();
                 } catch (Exception e) {
                     // its failure is not recorded: results.csv could not be written
                 }
@@ -170,47 +179,59 @@ public final class BatchRun {
         }
         BatchSummary summary = new BatchSummary(results, rows.size(), cancelled.get() && results.size() < rows.size(),
                 fatal, seconds(t0));
-        quietly(() -> listener.finished(summary));
+        tell(() -> listener.finished(summary));
         return summary;
     }
 
-    /** A panorama row being written on the writer thread, after {@code renderSeconds} of rendering. */
-    private record Writing(BatchRow row, int index, double renderSeconds, java.util.concurrent.Future<Written> files) {
-    }
-
-    /** A row's files in place, and the seconds their writing took. */
-    private record Written(List<Path> files, double seconds) {
+    /** A panorama row being written, and then recorded, on the writer thread. */
+    private record Writing(java.util.concurrent.Future<Void> recorded) {
     }
 
     /** A rendered panorama and its set, opened before rendering. */
     private record Rendered(OutputSet set, Panorama panorama) {
     }
 
-    /** Waits for a row's files (null: none pending) and records its result. */
-    private void finish(Writing w, ResultsCsv csv, List<BatchResult> results, Path resultsFile) throws IOException {
+    /**
+     * Waits until a row being written (null: none) is in place and recorded; rethrows what stopped its recording
+     * (results.csv unwritable) or its writing (an Error but running out of memory).
+     */
+    private static void finish(Writing w) throws IOException {
         if (w == null) {
             return;
         }
-        BatchResult result;
         boolean interrupted = false;
-        while (true) {
-            try {
-                Written written = w.files().get();
-                result = BatchResult.ok(w.row(), written.files(), w.renderSeconds() + written.seconds());
-                break;
-            } catch (InterruptedException e) {
-                interrupted = true; // the files are being written: wait for them all the same
-            } catch (java.util.concurrent.ExecutionException e) {
-                result = failed(w.row(), e.getCause(), w.renderSeconds()); // its writing's seconds are not known
-                break;
+        try {
+            while (true) {
+                try {
+                    w.recorded().get();
+                    return;
+                } catch (InterruptedException e) {
+                    interrupted = true; // the files are being written: wait for them all the same
+                } catch (java.util.concurrent.ExecutionException e) {
+                    Throwable cause = e.getCause();
+                    if (cause instanceof IOException io) {
+                        throw io;
+                    }
+                    if (cause instanceof RuntimeException re) {
+                        throw re;
+                    }
+                    if (cause instanceof Error err) {
+                        throw err;
+                    }
+                    throw new IOException(cause);
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
             }
         }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
-        record(result, w.index(), csv, results, resultsFile);
     }
 
+    /**
+     * Adds a row's result, its line in results.csv and tells the listener. Called on the run's thread or the writer's,
+     * never at once (a row's writing is waited for before the next is recorded), in row order.
+     */
     private void record(BatchResult result, int index, ResultsCsv csv, List<BatchResult> results, Path resultsFile)
             throws IOException {
         results.add(result);
@@ -219,7 +240,7 @@ public final class BatchRun {
         } catch (IOException e) {
             throw new IOException("cannot write " + resultsFile + ": " + IoMessages.reason(e), e);
         }
-        quietly(() -> listener.rowFinished(result, index));
+        tell(() -> listener.rowFinished(result, index));
     }
 
     /** A row's failure as its result line. */
@@ -316,11 +337,14 @@ public final class BatchRun {
         return (System.nanoTime() - sinceNanos) / 1e9;
     }
 
-    private static void quietly(Runnable r) {
-        try {
-            r.run();
-        } catch (RuntimeException e) {
-            // a listener's failure is not the batch's
+    /** Calls the listener: one call at a time (the writer thread tells of rows too); its failure is not the batch's. */
+    private void tell(Runnable r) {
+        synchronized (listener) {
+            try {
+                r.run();
+            } catch (RuntimeException e) {
+                // a listener's failure is not the batch's
+            }
         }
     }
 }
