@@ -48,7 +48,7 @@ import org.apache.commons.csv.CSVRecord;
  *
  * An empty optional cell, or a missing optional column, takes the value of the defaults request
  * (the command line's options). Other columns (names, notes) are ignored and reported by
- * {@link Parsed#ignoredColumns()}. Blank lines are skipped.
+ * {@link Parsed#ignoredColumns()}. Blank lines, and lines starting with {@code #} (comments: no id starts so), are skipped.
  *
  * <p>A bad row (a number that is not plain decimal, NaN, a coordinate or setting out of range, a
  * wrong number of fields, an unsafe or repeated id) becomes an invalid {@link BatchRow} with a
@@ -120,21 +120,27 @@ public final class ViewpointCsv {
         }
     }
 
+    /** The file name that reads the rows from standard input. */
+    public static final String STANDARD_INPUT = "-";
+
     /**
-     * Reads a viewpoint file (UTF-8; a byte-order mark is skipped).
+     * Reads a viewpoint file (UTF-8; a byte-order mark is skipped); {@value #STANDARD_INPUT}: standard input.
      *
      * @param defaults the request each row starts from (its latitude and longitude are replaced)
      * @throws ViewpointCsvException when the file cannot be read or used at all; the message names the file
      */
     public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
-        Path parent = file.toAbsolutePath().getParent();
+        boolean stdin = file.toString().equals(STANDARD_INPUT);
+        // Photos named relative to the file's folder; from standard input, to the working directory.
+        Path parent = stdin ? Path.of("").toAbsolutePath() : file.toAbsolutePath().getParent();
         Decoded d;
         try {
-            d = decode(Files.readAllBytes(file));
+            d = decode(stdin ? System.in.readAllBytes() : Files.readAllBytes(file));
         } catch (IOException e) {
-            throw new ViewpointCsvException("cannot read the viewpoint file " + file + ": " + IoMessages.reason(e), e);
+            throw new ViewpointCsvException("cannot read the viewpoint file " + (stdin ? "from standard input" : file) + ": "
+                    + IoMessages.reason(e), e);
         }
-        return parse(file.toString(), d.text(), defaults, parent, d.malformed());
+        return parse(stdin ? "standard input" : file.toString(), d.text(), defaults, parent, d.malformed());
     }
 
     /** A row's error for cells holding bytes that are no UTF-8 (the row is spoilt, not the file). */
@@ -193,7 +199,7 @@ public final class ViewpointCsv {
         if (text.startsWith("\uFEFF")) {
             text = text.substring(1);
         }
-        CSVFormat format = CSVFormat.DEFAULT.builder().setIgnoreEmptyLines(true).setIgnoreSurroundingSpaces(true)
+        CSVFormat format = CSVFormat.DEFAULT.builder().setIgnoreEmptyLines(true).setIgnoreSurroundingSpaces(true).setCommentMarker('#')
                 .setTrim(true).get();
         int[] lineStarts = lineStarts(text);
         List<BatchRow> rows = new ArrayList<>();
@@ -215,6 +221,7 @@ public final class ViewpointCsv {
                 } catch (UncheckedIOException | IllegalStateException e) {
                     throw new ViewpointCsvException(source + ": broken CSV after line " + Math.max(1, parser.getCurrentLineNumber())
                             + " (" + oneLine(e.getCause() != null ? e.getCause().getMessage() : e.getMessage())
+                            .replaceFirst("^\\((startline \\d+)\\)\\s*", "$1: ") // Commons CSV's own parentheses
                             + "): the file cannot be read past it", e);
                 }
                 List<String> f = r.toList();
@@ -267,11 +274,18 @@ public final class ViewpointCsv {
         }
         for (String c : REQUIRED) {
             if (!columns.containsKey(c) && !(columns.containsKey(IMAGE) && !c.equals(ID))) {
+                String separator = names.size() == 1 ? otherSeparator(names.get(0)) : null;
                 throw new ViewpointCsvException(source + ": line " + line + ": the header has no column '" + c + "' (it has: "
-                        + oneLine(String.join(", ", names)) + "; required: " + String.join(", ", REQUIRED) + "; or id and image for photos)");
+                        + oneLine(String.join(", ", names)) + "; required: " + String.join(", ", REQUIRED) + "; or id and image for photos)"
+                        + (separator == null ? "" : ": the columns seem separated by " + separator + "; separate them by commas"));
             }
         }
         return columns;
+    }
+
+    /** How a one-column header line seems separated where not by commas ("a semicolon", "tabs"), else null. */
+    private static String otherSeparator(String header) {
+        return header.contains(";") ? "semicolons" : header.contains("\t") ? "tabs" : header.contains("|") ? "bars" : null;
     }
 
     private static BatchRow row(int line, List<String> f, int headerFields, Map<String, Integer> columns,
@@ -432,8 +446,16 @@ public final class ViewpointCsv {
     /** The 1-based line of the first non-blank character at or after a record's start. */
     private static int lineOf(String text, int[] lineStarts, long position) {
         int p = (int) Math.min(position, text.length());
-        while (p < text.length() && Character.isWhitespace(text.charAt(p))) {
-            p++;
+        while (true) { // a record's position is before the blank and comment lines that precede it
+            while (p < text.length() && Character.isWhitespace(text.charAt(p))) {
+                p++;
+            }
+            if (p >= text.length() || text.charAt(p) != '#') {
+                break;
+            }
+            while (p < text.length() && text.charAt(p) != '\n' && text.charAt(p) != '\r') {
+                p++;
+            }
         }
         int lo = 0, hi = lineStarts.length - 1;
         while (lo < hi) {

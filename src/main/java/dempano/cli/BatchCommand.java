@@ -3,6 +3,7 @@ package dempano.cli;
 import dempano.terrain.DeviationStore;
 import dempano.PanoramaRenderer;
 import dempano.PanoramaRequest;
+import dempano.batch.BatchIds;
 import dempano.batch.BatchListener;
 import dempano.batch.BatchRenderer;
 import dempano.batch.BatchResult;
@@ -57,7 +58,7 @@ public final class BatchCommand implements Callable<Integer> {
     /** How long Ctrl-C waits for the row in progress to finish before the process ends anyway. */
     static final Duration INTERRUPT_GRACE = Duration.ofSeconds(60);
 
-    @Parameters(index = "0", paramLabel = "VIEWPOINTS.csv", description = "Viewpoints, one per row (UTF-8 CSV with a header line).")
+    @Parameters(index = "0", paramLabel = "VIEWPOINTS.csv", description = "Viewpoints, one per row (UTF-8 CSV with a header line; lines starting with # are comments; - reads standard input).")
     Path viewpoints;
     @Option(names = "--out-dir", required = true, paramLabel = "D", description = "Output folder (created if missing).")
     Path outDir;
@@ -75,15 +76,17 @@ public final class BatchCommand implements Callable<Integer> {
      * batch would overwrite its own input.
      */
     static String writtenOver(Path viewpoints, Path outDir, List<BatchRow> rows) {
+        Path file;
         try {
-            Path dir = viewpoints.toAbsolutePath().getParent();
+            file = viewpoints.toRealPath(); // the file itself: a link to results.csv is results.csv
+            Path dir = file.getParent();
             if (dir == null || !Files.isSameFile(dir, outDir)) {
                 return null;
             }
         } catch (IOException e) {
             return null; // the folder does not exist yet: nothing in it is overwritten
         }
-        String name = viewpoints.getFileName().toString().toLowerCase(Locale.ROOT);
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.equals(BatchRenderer.resultsFile(outDir).getFileName().toString().toLowerCase(Locale.ROOT))) {
             return "the results file";
         }
@@ -131,13 +134,14 @@ public final class BatchCommand implements Callable<Integer> {
         }
         err.printf(Locale.ROOT, "dempano batch: %d rows (%d valid) from %s, DEM %s, into %s%n", rows.size(),
                 parsed.validCount(), viewpoints, dem.describe(), outDir);
-        boolean bar = progress || System.console() != null;
+        boolean terminal = StderrTerminal.isInteractive();
+        boolean bar = progress || terminal;
         BatchSummary summary;
         java.util.concurrent.CountDownLatch reported = new java.util.concurrent.CountDownLatch(1);
         try (PanoramaRenderer r = reference ? PanoramaRenderer.openReference(dem)
                 : PanoramaRenderer.openInBackground(dem).withDeviationStore(DeviationStore.userDefault())) {
             BatchRun run = new BatchRenderer(r, outDir, new PanoramaWriter.Options(panorama.pfm, null,
-                    dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err) : new Log(err));
+                    dempano.io.SummitWriter.LabelOptions.DEFAULT)).newRun(rows, bar ? new Bar(err, terminal) : new Log(err));
             Thread hook = new Thread(() -> interrupted(run, reported, err), "dempano-batch-interrupt");
             Runtime.getRuntime().addShutdownHook(hook);
             // The exit cleanup of uncommitted output sets waits for the row in progress, which Ctrl-C lets finish.
@@ -151,6 +155,9 @@ public final class BatchCommand implements Callable<Integer> {
             dempano.io.OutputSet.finishBeforeCleanup(finishing);
             try {
                 summary = run.run();
+            } catch (IOException e) { // results.csv: a read-only folder, another batch writing into it
+                err.println("dempano batch: " + e.getMessage());
+                return 1;
             } finally {
                 dempano.io.OutputSet.noLongerFinishing(finishing);
                 try {
@@ -219,21 +226,31 @@ public final class BatchCommand implements Callable<Integer> {
         }
     }
 
+    /** A row's line; its id as results.csv writes it (a control character in a refused id as ?: one line, no escapes). */
     static String line(BatchResult r, int index, int total) {
+        String id = BatchIds.printable(r.id());
         return r.ok()
-                ? String.format(Locale.ROOT, "dempano batch: [%d/%d] %s ok, %.2f s, %d files", index + 1, total, r.id(),
+                ? String.format(Locale.ROOT, "dempano batch: [%d/%d] %s ok, %.2f s, %d files", index + 1, total, id,
                 r.seconds(), r.files().size())
-                : String.format(Locale.ROOT, "dempano batch: [%d/%d] %s error: %s", index + 1, total, r.id(), r.error());
+                : String.format(Locale.ROOT, "dempano batch: [%d/%d] %s error: %s", index + 1, total, id, r.error());
     }
 
-    /** A progress bar with rate and ETA; bad rows get a line of their own above it. */
+    /**
+     * A progress bar with rate and ETA; bad rows get a line of their own above it. Its width is the terminal's, asked
+     * of stderr itself ({@link StderrTerminal}): the library's own console consumer opens a JLine terminal for that,
+     * which takes over SIGINT, and Ctrl-C then killed the batch outright (no row finished, no summary, staging
+     * folders and unlisted sets left).
+     */
     static final class Bar implements BatchListener {
         private final PrintStream err;
+        private final boolean terminal;
         private ProgressBar bar;
         private int total;
 
-        Bar(PrintStream err) {
+        /** @param terminal whether stderr is a terminal (else the bar is asked for: lines end in a return only) */
+        Bar(PrintStream err, boolean terminal) {
             this.err = err;
+            this.terminal = terminal;
         }
 
         @Override
@@ -241,19 +258,29 @@ public final class BatchCommand implements Callable<Integer> {
             total = rows;
             bar = new ProgressBarBuilder().setTaskName("batch").setInitialMax(rows).setStyle(ProgressBarStyle.ASCII)
                     .setUnit(" pano", 1).showSpeed(new DecimalFormat("0.00")).setUpdateIntervalMillis(500)
-                    .setConsumer(new ConsoleProgressBarConsumer(err)).build();
+                    .setConsumer(consumer(err, terminal)).build();
+        }
+
+        /** The bar's output: lines as wide as stderr's terminal (else {@link StderrTerminal#DEFAULT_COLUMNS}), less one. */
+        static ConsoleProgressBarConsumer consumer(PrintStream err, boolean terminal) {
+            return new ConsoleProgressBarConsumer(err, StderrTerminal.DEFAULT_COLUMNS - 1) {
+                @Override
+                public int getMaxRenderedLength() {
+                    return (terminal ? StderrTerminal.columns() : StderrTerminal.DEFAULT_COLUMNS) - 1;
+                }
+            };
         }
 
         @Override
         public void rowStarted(BatchRow row, int index) {
-            bar.setExtraMessage(row.id());
+            bar.setExtraMessage(" " + BatchIds.printable(row.id())); // after the rate: "0.50 pano/s p7"
         }
 
         @Override
         public void rowFinished(BatchResult r, int index) {
             if (!r.ok()) {
                 synchronized (err) {
-                    err.print(System.console() != null ? "\r\033[2K" : "\n"); // off the bar's line
+                    err.print(terminal ? "\r\033[2K" : "\n"); // off the bar's line
                     err.println(line(r, index, total));
                 }
             }

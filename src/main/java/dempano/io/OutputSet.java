@@ -372,8 +372,21 @@ public final class OutputSet implements AutoCloseable {
                 try (channel; FileLock ignored = channel.lock()) {
                     // The file may have been deleted by the previous holder after we opened it: the lock
                     // is ours only if the name still leads to the file we locked (our token is in it).
-                    channel.truncate(0);
-                    channel.write(ByteBuffer.wrap(token), 0);
+                    try {
+                        channel.truncate(0);
+                        channel.write(ByteBuffer.wrap(token), 0);
+                    } catch (IOException e) {
+                        // No room for the token (a full disk): the empty file would stay behind, one per id. Nobody
+                        // else can write a token either, so an empty file at the name is this one.
+                        try {
+                            if (Files.size(lockFile) == 0) {
+                                Files.deleteIfExists(lockFile);
+                            }
+                        } catch (IOException gone) {
+                            e.addSuppressed(gone);
+                        }
+                        throw e;
+                    }
                     byte[] seen;
                     try {
                         seen = Files.readAllBytes(lockFile);

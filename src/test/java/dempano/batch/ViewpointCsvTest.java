@@ -204,7 +204,8 @@ class ViewpointCsvTest {
             "id,lat\\na,1                   | v.csv: line 1: the header has no column 'lon' (it has: id, lat; required: id, lat, lon; or id and image for photos)",
             "lat,lon\\n1,2                  | v.csv: line 1: the header has no column 'id'",
             "id,lat,lon,LAT\\na,1,2,3       | v.csv: line 1: the header names column 'lat' twice",
-            "id,lat,lon\\na,1,2\\n\"b,3,4\\n  | v.csv: broken CSV after line",
+            "id,lat,lon\\na,1,2\\n\"b,3,4\\n  | v.csv: broken CSV after line 3 (startline 3: EOF reached before encapsulated token finished): the file cannot be read past it",
+            "id;lat;lon\\na;1;2           | v.csv: line 1: the header has no column 'id' (it has: id;lat;lon; required: id, lat, lon; or id and image for photos): the columns seem separated by semicolons; separate them by commas",
     })
     void unusableFiles(String text, String message) {
         ViewpointCsvException e = assertThrows(ViewpointCsvException.class,
@@ -244,5 +245,28 @@ class ViewpointCsvTest {
             assertTrue(BatchIds.problem(bad) != null, () -> "accepted: " + bad);
         }
         assertEquals(BatchIds.collisionKey("Abc"), BatchIds.collisionKey("aBC"));
+    }
+
+    @Test
+    void commentLinesAreSkippedAndLaterRowsKeepTheirLineNumbers() throws ViewpointCsvException {
+        // A "# note,44.27,…" line was a row with an unsafe id, and the batch's exit code said rows failed.
+        List<BatchRow> rows = parse("# viewpoints for the survey\nid,lat,lon\n# the summit\na,46,8\n#b,46.1,8\nc,x,8\n").rows();
+        assertEquals(2, rows.size());
+        assertEquals("a", rows.get(0).id());
+        assertTrue(rows.get(0).valid());
+        assertEquals(6, rows.get(1).lineNumber());
+        assertTrue(rows.get(1).error().startsWith("line 6: "), rows.get(1).error());
+    }
+
+    @Test
+    void aDashReadsStandardInput() throws Exception {
+        java.io.InputStream in = System.in;
+        try {
+            System.setIn(new java.io.ByteArrayInputStream("id,lat,lon\na,46,8\n".getBytes(StandardCharsets.UTF_8)));
+            ViewpointCsv.Parsed p = ViewpointCsv.read(Path.of("-"), DEFAULTS);
+            assertEquals(1, p.validCount());
+        } finally {
+            System.setIn(in);
+        }
     }
 }

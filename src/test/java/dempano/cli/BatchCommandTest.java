@@ -244,4 +244,55 @@ class BatchCommandTest {
         assertTrue(r[1].contains("--out-dir"), r[1]);
         assertTrue(Arrays.asList(r[1].split("\n")).size() <= 3, r[1]);
     }
+
+    @Test
+    void theProgressBarOpensNoTerminalOfItsOwn() throws Exception {
+        // progressbar's own console consumer opened a JLine system terminal to learn the width, and JLine took over
+        // SIGINT: Ctrl-C on a terminal killed the batch outright (no row finished, staging folders and unlisted sets
+        // left; a hostile test on a pty). The bar asks stderr's width itself: the library's terminal stays unopened.
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream err = new java.io.PrintStream(bytes, true, java.nio.charset.StandardCharsets.UTF_8);
+        BatchCommand.Bar bar = new BatchCommand.Bar(err, false);
+        dempano.batch.BatchRow row = dempano.batch.BatchRow.of("p0", dempano.PanoramaRequest.at(46, 8));
+        bar.started(2);
+        bar.rowStarted(row, 0);
+        bar.rowFinished(new dempano.batch.BatchResult("p0", 2, dempano.batch.BatchResult.Status.ERROR, List.of(), 0.1, "line 2: no data"), 0);
+        bar.finished(null);
+        // (The library closes its terminal again when a bar closes: its consumer is asked directly.)
+        me.tongfei.progressbar.ConsoleProgressBarConsumer consumer = BatchCommand.Bar.consumer(err, true);
+        assertTrue(consumer.getMaxRenderedLength() > 0);
+        consumer.accept("batch 0% [ ] 0/2 pano");
+        Class<?> utils = Class.forName("me.tongfei.progressbar.TerminalUtils");
+        java.lang.reflect.Field terminal = utils.getDeclaredField("terminal");
+        terminal.setAccessible(true);
+        assertEquals(null, terminal.get(null), "the progress bar library opened a terminal");
+        String out = bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(out.contains("batch") && out.contains("[1/2] p0 error: line 2: no data"), out);
+        for (String line : out.split("[\r\n]")) {
+            assertTrue(line.length() < StderrTerminal.DEFAULT_COLUMNS, "wider than the assumed terminal: " + line);
+        }
+    }
+
+    @Test
+    void aRowsLineShowsItsIdWithoutControlCharacters() {
+        // An id with a newline or an escape (refused, but reported) printed raw: two lines, or a terminal's colours.
+        dempano.batch.BatchRow row = dempano.batch.BatchRow.of("a\nb\u001b[31m", dempano.PanoramaRequest.at(46, 8));
+        String line = BatchCommand.line(new dempano.batch.BatchResult(row.id(), 5, dempano.batch.BatchResult.Status.ERROR, List.of(), 0, "unsafe id"), 3, 9);
+        assertEquals("dempano batch: [4/9] a?b?[31m error: unsafe id", line);
+    }
+
+    @Test
+    void aViewpointFileThatIsTheResultsFileThroughALinkIsRefused(@TempDir Path dir) throws IOException {
+        // Refused by name in the output folder, but a link to it from elsewhere ran, and the viewpoints were
+        // overwritten by the results (a hostile test).
+        Path out = Files.createDirectories(dir.resolve("out"));
+        Path results = Files.writeString(out.resolve("results.csv"), "id,lat,lon\na,46,8\n");
+        Path link = Files.createSymbolicLink(dir.resolve("link.csv"), results);
+        List<dempano.batch.BatchRow> rows = List.of(dempano.batch.BatchRow.of("a", dempano.PanoramaRequest.at(46, 8)));
+        assertEquals("the results file", BatchCommand.writtenOver(results, out, rows));
+        assertEquals("the results file", BatchCommand.writtenOver(link, out, rows));
+        Path aRowsOutput = Files.createSymbolicLink(dir.resolve("b.csv"), Files.writeString(out.resolve("a.json"), ""));
+        assertEquals("an output of row 'a'", BatchCommand.writtenOver(aRowsOutput, out, rows));
+        assertEquals(null, BatchCommand.writtenOver(Files.writeString(dir.resolve("v.csv"), ""), out, rows));
+    }
 }
