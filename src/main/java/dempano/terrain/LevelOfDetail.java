@@ -75,9 +75,23 @@ public final class LevelOfDetail {
                     for (int a = 0; a <= lastA; a++) {
                         double v = fraction[a];
                         int at = (rn + a) * stride + cw;
-                        for (int b = 0; b <= lastB; b++) {
-                            double coarse = Triangulation.height(nwToSe, nw, ne, sw, se, v, fraction[b]);
-                            worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
+                        // Triangulation.height's two cases with the split hoisted out of the loop, written out: the
+                        // client compiler (a panorama's only one) does not inline that method, and the call made the
+                        // deviations 25 % slower (30 → 38 ms for 256 patches of 64 cells). LevelOfDetailTest checks
+                        // these against Triangulation.height value for value.
+                        if (nwToSe) {
+                            for (int b = 0; b <= lastB; b++) {
+                                double u = fraction[b];
+                                double coarse = u >= v ? nw + u * (ne - nw) + v * (se - ne) : nw + v * (sw - nw) + u * (se - sw);
+                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
+                            }
+                        } else {
+                            for (int b = 0; b <= lastB; b++) {
+                                double u = fraction[b];
+                                double coarse = u + v <= 1 ? nw + u * (ne - nw) + v * (sw - nw)
+                                        : se + (1 - u) * (sw - se) + (1 - v) * (ne - se);
+                                worst = Math.max(worst, Math.abs(heights[at + b] - coarse));
+                            }
                         }
                     }
                 }
