@@ -467,8 +467,17 @@ public final class PanoramaRenderer implements AutoCloseable {
             long[] drawAndRead = new long[2];
             long[] renderNanos = new long[1];
             // Colour only reads the range target whatever the depth mode: its nearest samples find the silhouettes.
-            OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far,
-                    req.colour(), req.depthMode() == DepthMode.SHADER_RANGE || !req.distance(), exact, false);
+            java.util.EnumSet<OffscreenRenderer.ViewRequest.Option> reads = java.util.EnumSet.noneOf(OffscreenRenderer.ViewRequest.Option.class);
+            if (req.colour()) {
+                reads.add(OffscreenRenderer.ViewRequest.Option.COLOUR);
+            }
+            if (req.depthMode() == DepthMode.SHADER_RANGE || !req.distance()) {
+                reads.add(OffscreenRenderer.ViewRequest.Option.RANGE_TARGET);
+            }
+            if (exact) {
+                reads.add(OffscreenRenderer.ViewRequest.Option.SURFACES);
+            }
+            OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, req.depthMode(), near, far, reads);
             java.util.concurrent.BlockingQueue<Object> arrived = new java.util.concurrent.LinkedBlockingQueue<>();
             Object end = new Object();
             // The GL thread draws on; this thread waits for it on a helper thread of its own, so as to take the

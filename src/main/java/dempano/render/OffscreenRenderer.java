@@ -28,9 +28,11 @@ import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
@@ -195,43 +197,80 @@ public final class OffscreenRenderer {
     /**
      * What one render draws and reads back.
      *
-     * @param layout      the views
-     * @param mode        projection and depth test; which target {@link ViewCapture#depth()} holds
-     * @param nearMetres  near plane
-     * @param farMetres   far plane (STANDARD_24) and culling distance (all modes)
-     * @param colour      read the colour target (else captures carry no colour; set the terrain
-     *                    material's {@code DistanceOnly} so the shader skips shading)
-     * @param rangeTarget captures' depth is the shader's range target whatever the mode (the mode
-     *                    then only chooses the projection and depth test); SHADER_RANGE needs it
-     * @param surfaces    also read which triangle each sample sees ({@link ViewCapture#triangleIds()}),
-     *                    for exact per-pixel distances
-     * @param release     free the scene's GL buffers afterwards (for single-use scenes)
-     * @param drawBackFaces draw terrain faces turned away from the eye too (slower; the same picture wherever the
-     *                    terrain is seen from above: for checking that); false culls them
-     *                    ({@link TerrainBuilder#CULL_BACK_FACES}: one draw call per geometry)
+     * @param layout     the views
+     * @param mode       projection and depth test; which target {@link ViewCapture#depth()} holds
+     * @param nearMetres near plane
+     * @param farMetres  far plane (STANDARD_24) and culling distance (all modes)
+     * @param options    what else it does ({@link Option}); {@link Option#RANGE_TARGET} is needed by SHADER_RANGE
      */
-    public record ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
-                              boolean rangeTarget, boolean surfaces, boolean release, boolean drawBackFaces) {
+    public record ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, Set<Option> options) {
+        /** What a render reads back and how it draws, beyond the mode's depth. */
+        public enum Option {
+            /**
+             * Read the colour target (else captures carry no colour; set the terrain material's {@code DistanceOnly}
+             * so the shader skips shading).
+             */
+            COLOUR,
+            /**
+             * Captures' depth is the shader's range target whatever the mode (the mode then only chooses the
+             * projection and depth test).
+             */
+            RANGE_TARGET,
+            /** Also read which triangle each sample sees ({@link ViewCapture#triangleIds()}), for exact per-pixel distances. */
+            SURFACES,
+            /** Free the scene's GL buffers afterwards (for single-use scenes). */
+            RELEASE,
+            /**
+             * Draw terrain faces turned away from the eye too (slower; the same picture wherever the terrain is seen
+             * from above: for checking that); without it they are culled ({@link TerrainBuilder#CULL_BACK_FACES}: one
+             * draw call per geometry).
+             */
+            BACK_FACES
+        }
+
         public ViewRequest {
-            if (mode == DepthMode.SHADER_RANGE && !rangeTarget) {
+            options = java.util.Collections.unmodifiableSet(options.isEmpty() ? EnumSet.noneOf(Option.class) : EnumSet.copyOf(options));
+            if (mode == DepthMode.SHADER_RANGE && !options.contains(Option.RANGE_TARGET)) {
                 throw new IllegalArgumentException("the shader-range mode reads the range target");
             }
         }
 
-        /** With back faces culled (the default: see {@link TerrainBuilder#CULL_BACK_FACES}). */
-        public ViewRequest(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres, boolean colour,
-                           boolean rangeTarget, boolean surfaces, boolean release) {
-            this(layout, mode, nearMetres, farMetres, colour, rangeTarget, surfaces, release, false);
+        /** Colour and the mode's depth, nothing else; back faces culled, buffers kept. */
+        public static ViewRequest of(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
+            return new ViewRequest(layout, mode, nearMetres, farMetres, mode == DepthMode.SHADER_RANGE
+                    ? EnumSet.of(Option.COLOUR, Option.RANGE_TARGET) : EnumSet.of(Option.COLOUR));
+        }
+
+        /** The same request with an option more. */
+        public ViewRequest with(Option option) {
+            EnumSet<Option> more = EnumSet.of(option);
+            more.addAll(options);
+            return new ViewRequest(layout, mode, nearMetres, farMetres, more);
         }
 
         /** The same request drawing every face, turned to the eye or not (as before back faces were culled). */
         public ViewRequest withBackFaces() {
-            return new ViewRequest(layout, mode, nearMetres, farMetres, colour, rangeTarget, surfaces, release, true);
+            return with(Option.BACK_FACES);
         }
 
-        /** Colour and the mode's depth, nothing else; buffers kept. */
-        public static ViewRequest of(ViewLayout layout, DepthMode mode, double nearMetres, double farMetres) {
-            return new ViewRequest(layout, mode, nearMetres, farMetres, true, mode == DepthMode.SHADER_RANGE, false, false);
+        public boolean colour() {
+            return options.contains(Option.COLOUR);
+        }
+
+        public boolean rangeTarget() {
+            return options.contains(Option.RANGE_TARGET);
+        }
+
+        public boolean surfaces() {
+            return options.contains(Option.SURFACES);
+        }
+
+        public boolean release() {
+            return options.contains(Option.RELEASE);
+        }
+
+        public boolean drawBackFaces() {
+            return options.contains(Option.BACK_FACES);
         }
     }
 
@@ -244,8 +283,7 @@ public final class OffscreenRenderer {
     public ViewCapture[] render(Node scene, ViewLayout layout, DepthMode mode, double nearMetres, double farMetres,
                                 boolean release) {
         ViewRequest r = ViewRequest.of(layout, mode, nearMetres, farMetres);
-        return render(scene, new ViewRequest(layout, mode, nearMetres, farMetres, true, r.rangeTarget(), false, release),
-                new long[2]);
+        return render(scene, release ? r.with(ViewRequest.Option.RELEASE) : r, new long[2]);
     }
 
     /**

@@ -34,7 +34,8 @@ record RealSceneViews(Viewpoint eye, Refraction refraction, double rangeMetres, 
                 TerrainBuilder.Detail.of(PIXELS_PER_DEGREE, 0.5));
         ViewLayout layout = ViewLayout.forPanorama(PanoramaGeometry.of(PIXELS_PER_DEGREE, -15, 15), 8, 1);
         OffscreenRenderer.ViewRequest request = new OffscreenRenderer.ViewRequest(layout, DepthMode.SHADER_RANGE, 1,
-                rangeMetres * 1.1 + 20_000, false, true, true, false);
+                rangeMetres * 1.1 + 20_000, java.util.EnumSet.of(OffscreenRenderer.ViewRequest.Option.RANGE_TARGET,
+                OffscreenRenderer.ViewRequest.Option.SURFACES));
         return new RealSceneViews(eye, refraction, rangeMetres, terrain, layout, request);
     }
 
