@@ -578,14 +578,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         try {
             drawing.join();
         } catch (java.util.concurrent.CompletionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException r) {
-                throw r;
-            }
-            if (cause instanceof Error err) {
-                throw err;
-            }
-            throw new IllegalStateException(cause);
+            throw dempano.util.Threads.unchecked(e.getCause());
         }
     }
 

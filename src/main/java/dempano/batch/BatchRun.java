@@ -199,32 +199,13 @@ public final class BatchRun {
         if (w == null) {
             return;
         }
-        boolean interrupted = false;
         try {
-            while (true) {
-                try {
-                    w.recorded().get();
-                    return;
-                } catch (InterruptedException e) {
-                    interrupted = true; // the files are being written: wait for them all the same
-                } catch (java.util.concurrent.ExecutionException e) {
-                    Throwable cause = e.getCause();
-                    if (cause instanceof IOException io) {
-                        throw io;
-                    }
-                    if (cause instanceof RuntimeException re) {
-                        throw re;
-                    }
-                    if (cause instanceof Error err) {
-                        throw err;
-                    }
-                    throw new IOException(cause);
-                }
+            dempano.util.Threads.getUninterruptibly(w.recorded()); // the files are being written: wait for them all the same
+        } catch (java.util.concurrent.ExecutionException e) {
+            if (e.getCause() instanceof IOException io) {
+                throw io;
             }
-        } finally {
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
+            throw dempano.util.Threads.unchecked(e.getCause());
         }
     }
 

@@ -131,16 +131,17 @@ public final class ViewpointCsv {
      */
     public static Parsed read(Path file, PanoramaRequest defaults) throws ViewpointCsvException {
         boolean stdin = file.toString().equals(STANDARD_INPUT);
+        String source = stdin ? "standard input" : file.toString();
         // Photos named relative to the file's folder; from standard input, to the working directory.
         Path parent = stdin ? Path.of("").toAbsolutePath() : file.toAbsolutePath().getParent();
         Decoded d;
         try {
             d = decode(stdin ? System.in.readAllBytes() : Files.readAllBytes(file));
         } catch (IOException e) {
-            throw new ViewpointCsvException("cannot read the viewpoint file " + (stdin ? "from standard input" : file) + ": "
+            throw new ViewpointCsvException("cannot read the viewpoint file " + (stdin ? "from " : "") + source + ": "
                     + IoMessages.reason(e), e);
         }
-        return parse(stdin ? "standard input" : file.toString(), d.text(), defaults, parent, d.malformed());
+        return parse(source, d.text(), defaults, parent, d.malformed());
     }
 
     /** A row's error for cells holding bytes that are no UTF-8 (the row is spoilt, not the file). */

@@ -1,11 +1,11 @@
 package dempano.bench;
 
+import dempano.util.Quantiles;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import dempano.util.Quantiles;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;

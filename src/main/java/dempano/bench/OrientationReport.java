@@ -17,6 +17,7 @@ import dempano.panorama.ElevationRange;
 import dempano.panorama.Layer;
 import dempano.panorama.Panorama;
 import dempano.util.Decimals;
+import dempano.util.Quantiles;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
@@ -24,7 +25,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import dempano.util.Quantiles;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -586,27 +586,29 @@ public final class OrientationReport implements java.util.concurrent.Callable<In
         }
         double[] match = rows.stream().mapToDouble(Row::seconds).toArray();
         double[] glWarm = gl.subList(1, gl.size()).stream().mapToDouble(Double::doubleValue).toArray();
+        double matchWarm = Quantiles.median(Arrays.copyOfRange(match, 1, match.length)); // after the first photo
         b.append(String.format(Locale.ROOT, "%nTime per photo (2 shared cores): skyline extraction and matching %.2f s for the"
                         + " first photo of the JVM (cold), median %.2f s, max %.2f s afterwards; the OpenGL panorama the photo is"
                         + " matched against (%.0f ppd, %.0f km, no exact distances) took %.1f s for the first scene (GL start"
                         + " included) and median %.1f s afterwards. Warm total per photo: about %.1f s. The CPU reference"
                         + " panoramas that make the photos took median %.1f s each (not part of the cost of a photo).%n",
-                match[0], Quantiles.median(Arrays.copyOfRange(match, 1, match.length)),
+                match[0], matchWarm,
                 Arrays.stream(match).skip(1).max().orElse(Double.NaN),
                 ESTIMATOR_PPD, RANGE_METRES / 1000, gl.get(0), Quantiles.median(glWarm),
-                Quantiles.median(glWarm) + Quantiles.median(Arrays.copyOfRange(match, 1, match.length)),
+                Quantiles.median(glWarm) + matchWarm,
                 Quantiles.median(ref.stream().mapToDouble(Double::doubleValue).toArray())));
         double[] matchCpu = rows.stream().mapToDouble(Row::cpuSeconds).toArray();
+        double matchCpuWarm = Quantiles.median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length));
         double glCpuWarm = Quantiles.median(glCpu.subList(1, glCpu.size()).stream().mapToDouble(Double::doubleValue).toArray());
         b.append(String.format(Locale.ROOT, "%nCPU time (process, all threads): matching median %.2f s per photo after the"
                         + " first, the OpenGL panorama median %.1f s after the first scene; warm total about %.1f CPU s per"
                         + " photo (2 cores: at least half of it in wall time on an idle machine).%n",
-                Quantiles.median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length)), glCpuWarm,
-                glCpuWarm + Quantiles.median(Arrays.copyOfRange(matchCpu, 1, matchCpu.length))));
+                matchCpuWarm, glCpuWarm,
+                glCpuWarm + matchCpuWarm));
         b.append(String.format(Locale.ROOT, "%nPose draws rejected because the skyline did not cross at least 80 %% of the"
                 + " photo's columns: %d; because the photo showed terrain on a missing tile or within about 1 km of one: %d.%n",
                 rejected.skyline(), rejected.missingData()));
-        b.append(reading(rows, Quantiles.median(glWarm) + Quantiles.median(Arrays.copyOfRange(match, 1, match.length)), run));
+        b.append(reading(rows, Quantiles.median(glWarm) + matchWarm, run));
         return b.toString();
     }
 

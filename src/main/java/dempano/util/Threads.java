@@ -23,4 +23,38 @@ public final class Threads {
             Thread.currentThread().interrupt();
         }
     }
+
+    /**
+     * Waits for a task's result even when interrupted meanwhile (as {@link #joinUninterruptibly}); the interrupt flag
+     * is restored afterwards.
+     *
+     * @throws java.util.concurrent.ExecutionException what the task threw
+     */
+    public static <T> T getUninterruptibly(java.util.concurrent.Future<T> task) throws java.util.concurrent.ExecutionException {
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    return task.get();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /**
+     * What another thread threw, to throw again here as it was: an Error is thrown at once, an unchecked exception
+     * returned, a checked one returned wrapped (the caller has taken out those it declares).
+     */
+    public static RuntimeException unchecked(Throwable cause) {
+        if (cause instanceof Error err) {
+            throw err;
+        }
+        return cause instanceof RuntimeException r ? r : new IllegalStateException(cause);
+    }
 }
