@@ -455,7 +455,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             if (!req.colour()) {
                 material.setBoolean("DistanceOnly", true);
             }
-            new EyePlacement(eye, req.refraction()).apply(material);
+            TerrainBuilder.applyEye(material, new EyePlacement(eye, req.refraction()));
             for (com.jme3.scene.Geometry g : terrain.drawn()) {
                 g.setMaterial(material);
             }

@@ -1,9 +1,5 @@
 package dempano.terrain;
 
-import com.jme3.bounding.BoundingBox;
-import com.jme3.material.Material;
-import com.jme3.math.Matrix3f;
-import com.jme3.math.Vector3f;
 import dempano.geo.Ellipsoid;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
@@ -13,7 +9,7 @@ import dempano.geo.Viewpoint;
  * positions (double-single) that do not depend on the eye, and the shader subtracts the eye's
  * position, lifts each vertex by refraction (k·d²/2R over the ground distance d between the feet, as
  * {@link Refraction} defines it) and turns it into the eye's frame (jME axes: x east, y up,
- * z south). Immutable.
+ * z south). Immutable, and free of GL: {@link TerrainBuilder#applyEye} hands {@link #uniforms()} to a material.
  */
 public final class EyePlacement {
     /** Added to every bound, metres: the earth's curvature between a patch's corners (a few metres) and more. */
@@ -61,22 +57,31 @@ public final class EyePlacement {
         }
     }
 
-    /** Sets the eye's uniforms on a terrain material. */
-    public void apply(Material m) {
-        float[] high = new float[3], low = new float[3];
+    /**
+     * The eye as the terrain shader takes it (Terrain.vert's uniforms).
+     *
+     * @param eyeHigh            the eye's ECEF position rounded to floats, metres
+     * @param eyeLow             the rest of it (eye − high, as floats): high + low is the eye to about 1e-15
+     *                           relative, the vertices' double-single form
+     * @param eyeFoot            the ellipsoid point below the eye, relative to the eye (ECEF), metres
+     * @param ecefToEye          the rotation from ECEF to the eye's frame, row-major (rows east, up, south)
+     * @param liftPerSquareMetre refraction's lift over a ground distance d is this × d², metres per square metre
+     */
+    public record Uniforms(float[] eyeHigh, float[] eyeLow, float[] eyeFoot, float[] ecefToEye, float liftPerSquareMetre) {
+    }
+
+    /** The eye's uniforms for the terrain shader. */
+    public Uniforms uniforms() {
+        float[] high = new float[3], low = new float[3], foot = new float[3], rotation = new float[9];
         for (int a = 0; a < 3; a++) {
             high[a] = (float) eyeEcef[a];
             low[a] = (float) (eyeEcef[a] - high[a]);
+            foot[a] = (float) footRelative[a];
+            for (int b = 0; b < 3; b++) {
+                rotation[3 * a + b] = (float) rows[a][b];
+            }
         }
-        m.setVector3("EyeHigh", new Vector3f(high[0], high[1], high[2]));
-        m.setVector3("EyeLow", new Vector3f(low[0], low[1], low[2]));
-        m.setVector3("EyeFoot", new Vector3f((float) footRelative[0], (float) footRelative[1], (float) footRelative[2]));
-        m.setParam("EcefToEye", com.jme3.shader.VarType.Matrix3, new Matrix3f(
-                (float) rows[0][0], (float) rows[0][1], (float) rows[0][2],
-                (float) rows[1][0], (float) rows[1][1], (float) rows[1][2],
-                (float) rows[2][0], (float) rows[2][1], (float) rows[2][2]));
-        m.setFloat("LiftPerSquareMetre", (float) liftPerSquareMetre);
-        m.setFloat("MeanRadius", (float) Ellipsoid.MEAN_RADIUS_METRES);
+        return new Uniforms(high, low, foot, rotation, (float) liftPerSquareMetre);
     }
 
     /**
@@ -85,8 +90,9 @@ public final class EyePlacement {
      * vertical there) and {@link #BOUND_MARGIN_METRES} are added on every side.
      *
      * @param hull ECEF points, 3 doubles each
+     * @return the box's least x, y, z, then its greatest x, y, z, metres
      */
-    public BoundingBox bound(double[] hull) {
+    public double[] bound(double[] hull) {
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         double farthest = 0;
@@ -100,8 +106,6 @@ public final class EyePlacement {
             }
         }
         double pad = BOUND_MARGIN_METRES + liftPerSquareMetre * Math.pow(1.01 * farthest + 1000, 2);
-        Vector3f lo = new Vector3f((float) (min[0] - pad), (float) (min[1] - pad), (float) (min[2] - pad));
-        Vector3f hi = new Vector3f((float) (max[0] + pad), (float) (max[1] + pad), (float) (max[2] + pad));
-        return new BoundingBox(lo, hi);
+        return new double[] {min[0] - pad, min[1] - pad, min[2] - pad, max[0] + pad, max[1] + pad, max[2] + pad};
     }
 }

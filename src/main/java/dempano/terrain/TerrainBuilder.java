@@ -153,27 +153,6 @@ public final class TerrainBuilder {
     }
 
     /**
-     * Full resolution everywhere.
-     *
-     * @param rangeMetres terrain whose ground distance exceeds this is left out (whole patches here;
-     *                    the exact cut is made per fragment by the shader)
-     */
-    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material) {
-        return build(mosaic, eye, refraction, rangeMetres, material, 1, 0);
-    }
-
-    /**
-     * As {@link #build(Mosaic, Viewpoint, Refraction, double, Material)}, with each patch simplified
-     * as far as {@link LevelOfDetail} allows for a screen error of at most {@code maxErrorPx} pixels
-     * at {@code pixelsPerDegree} (0 = full resolution everywhere). Where neighbouring patches differ,
-     * vertical skirts as deep as both patches' errors together close the cracks between them.
-     */
-    public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
-                                double pixelsPerDegree, double maxErrorPx) {
-        return build(mosaic, eye, refraction, rangeMetres, material, Detail.of(pixelsPerDegree, maxErrorPx));
-    }
-
-    /**
      * How finely and with what help a terrain is built: the level of detail, the fly-through's exaggeration,
      * the caches and the culling below the lowest sampled ray.
      *
@@ -216,246 +195,337 @@ public final class TerrainBuilder {
         }
     }
 
-    /** As above, built as {@code detail} says. */
+    /**
+     * The terrain of {@code mosaic} seen from {@code eye}: each patch simplified as far as
+     * {@link LevelOfDetail} allows for a screen error of at most {@link Detail#maxErrorPx()} pixels at
+     * {@link Detail#pixelsPerDegree()} (0 = full resolution everywhere). Where neighbouring patches
+     * differ, vertical skirts as deep as both patches' errors together close the cracks between them.
+     *
+     * @param rangeMetres terrain whose ground distance exceeds this is left out (whole patches here;
+     *                    the exact cut is made per fragment by the shader)
+     * @param material    every geometry's material, given the eye's uniforms ({@link EyePlacement#apply});
+     *                    null = none set (the geometries are read on the CPU only)
+     */
     public static Terrain build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Material material,
                                 Detail detail) {
-        double pixelsPerDegree = detail.pixelsPerDegree(), maxErrorPx = detail.maxErrorPx();
-        double exaggeration = detail.exaggeration(), cullBelowDeg = detail.cullBelowDeg();
-        DeviationCache cache = detail.cache();
-        MeshCache meshes = detail.meshes();
-        // Nothing derived from heights a tile no longer has is served (a tile file rewritten since the last build).
-        if (cache != null) {
-            cache.forgetChanged(mosaic);
-        }
-        List<Geometry> stale = meshes == null ? List.of() : meshes.forgetChanged(mosaic);
-        LocalFrame frame = eye.eyeFrame();
-        double eyeRow = mosaic.rowOf(eye.latDeg()), eyeCol = mosaic.colOf(eye.lonDeg());
-        // Cells of the mosaic that can lie within range (a generous box; exact cut later). Rows are
-        // shortest (metres) on the side nearer the pole: take the smaller cosine, as a lower bound.
-        double metresPerRow = 111_000.0 / mosaic.intervalsPerDegree();
-        double cosMin = Math.cos(Math.toRadians(Math.min(89.9, Math.abs(eye.latDeg()) + rangeMetres / 111_000.0 + 0.01)));
-        double metresPerCol = metresPerRow * Math.max(0.001, cosMin);
-        int r0 = Math.max(0, (int) Math.floor(eyeRow - rangeMetres / metresPerRow * 1.05 - 2));
-        int r1 = Math.min(mosaic.rows() - 1, (int) Math.ceil(eyeRow + rangeMetres / metresPerRow * 1.05 + 2));
-        int c0 = Math.max(0, (int) Math.floor(eyeCol - rangeMetres / metresPerCol * 1.05 - 2));
-        int c1 = Math.min(mosaic.cols() - 1, (int) Math.ceil(eyeCol + rangeMetres / metresPerCol * 1.05 + 2));
+        return new Build(mosaic, eye, refraction, rangeMetres, detail).run(material);
+    }
 
-        // Patches on a grid aligned to whole multiples of the patch size from 90°N, 180°W, so that a
-        // patch is the same whatever the viewpoint (its deviations can be cached). The window grows
-        // to whole patches; rows and columns beyond the mosaic repeat its edge (degenerate cells).
-        int p = PATCH_INTERVALS;
-        long globalRow0 = (long) (90 - mosaic.latNorthDeg()) * mosaic.intervalsPerDegree();
-        long globalCol0 = (long) Math.floorMod(mosaic.lonWestDeg() + 180, 360) * mosaic.intervalsPerDegree();
-        r0 -= (int) Math.floorMod(globalRow0 + r0, p);
-        c0 -= (int) Math.floorMod(globalCol0 + c0, p);
-        int nr = r1 - r0 + 1 + p, nc = c1 - c0 + 1 + p;
-        double[] sinLat = new double[nr], cosLat = new double[nr], sinLon = new double[nc], cosLon = new double[nc];
-        for (int r = 0; r < nr; r++) {
-            double phi = Math.toRadians(mosaic.latOfRow(clampRow(mosaic, r0 + r)));
-            sinLat[r] = Math.sin(phi);
-            cosLat[r] = Math.cos(phi);
-        }
-        for (int c = 0; c < nc; c++) {
-            double lam = Math.toRadians(mosaic.wrappedLonOfCol(clampCol(mosaic, c0 + c)));
-            sinLon[c] = Math.sin(lam);
-            cosLon[c] = Math.cos(lam);
-        }
-        Placer placer = new Placer(mosaic, r0, c0, sinLat, cosLat, sinLon, cosLon, exaggeration);
+    /**
+     * One build: its inputs, the window of the mosaic it covers, and its passes in the order {@link #run} makes
+     * them (the patches within range; their levels; their skirts and cached meshes; the vertices of the others;
+     * the scene).
+     */
+    private static final class Build {
+        final Mosaic mosaic;
+        final Viewpoint eye;
+        final Refraction refraction;
+        final double rangeMetres;
+        final Detail detail;
+        /** The eye's fractional row and column in the mosaic. */
+        final double eyeRow, eyeCol;
+        /**
+         * First and last rows and columns of the mosaic that can lie within range (a generous box; the exact cut
+         * comes later), the first grown back to a whole patch of the global grid.
+         */
+        final int r0, r1, c0, c1;
+        /** The mosaic's first row and column on the global grid (rows from 90° N, columns from 180° W). */
+        final long globalRow0, globalCol0;
+        /** The smallest and largest cosine of latitude within range, as bounds. */
+        final double cosMin, cosMax;
+        /** A row's length on the mean sphere, metres. */
+        final double rowMetresExact;
 
-        List<PatchWork> candidates = new ArrayList<>();
-        for (int pr = r0; pr < r1; pr += p) {
-            for (int pc = c0; pc < c1; pc += p) {
-                PatchWork w = new PatchWork();
-                w.row0 = pr;
-                w.col0 = pc;
-                candidates.add(w);
+        Build(Mosaic mosaic, Viewpoint eye, Refraction refraction, double rangeMetres, Detail detail) {
+            this.mosaic = mosaic;
+            this.eye = eye;
+            this.refraction = refraction;
+            this.rangeMetres = rangeMetres;
+            this.detail = detail;
+            eyeRow = mosaic.rowOf(eye.latDeg());
+            eyeCol = mosaic.colOf(eye.lonDeg());
+            // Rows are shortest (metres) on the side nearer the pole: take the smaller cosine, as a lower bound.
+            double metresPerRow = 111_000.0 / mosaic.intervalsPerDegree();
+            cosMin = Math.cos(Math.toRadians(Math.min(89.9, Math.abs(eye.latDeg()) + rangeMetres / 111_000.0 + 0.01)));
+            cosMax = Math.cos(Math.toRadians(Math.max(0, Math.abs(eye.latDeg()) - rangeMetres / 111_000.0 - 0.01)));
+            double metresPerCol = metresPerRow * Math.max(0.001, cosMin);
+            int rowFirst = Math.max(0, (int) Math.floor(eyeRow - rangeMetres / metresPerRow * 1.05 - 2));
+            r1 = Math.min(mosaic.rows() - 1, (int) Math.ceil(eyeRow + rangeMetres / metresPerRow * 1.05 + 2));
+            int colFirst = Math.max(0, (int) Math.floor(eyeCol - rangeMetres / metresPerCol * 1.05 - 2));
+            c1 = Math.min(mosaic.cols() - 1, (int) Math.ceil(eyeCol + rangeMetres / metresPerCol * 1.05 + 2));
+            // Patches on a grid aligned to whole multiples of the patch size from 90°N, 180°W, so that a
+            // patch is the same whatever the viewpoint (its deviations can be cached). The window grows
+            // to whole patches; rows and columns beyond the mosaic repeat its edge (degenerate cells).
+            globalRow0 = (long) (90 - mosaic.latNorthDeg()) * mosaic.intervalsPerDegree();
+            globalCol0 = (long) Math.floorMod(mosaic.lonWestDeg() + 180, 360) * mosaic.intervalsPerDegree();
+            r0 = rowFirst - (int) Math.floorMod(globalRow0 + rowFirst, PATCH_INTERVALS);
+            c0 = colFirst - (int) Math.floorMod(globalCol0 + colFirst, PATCH_INTERVALS);
+            rowMetresExact = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
+        }
+
+        Terrain run(Material material) {
+            // Nothing derived from heights a tile no longer has is served (a tile file rewritten since the last build).
+            if (detail.cache() != null) {
+                detail.cache().forgetChanged(mosaic);
             }
-        }
-        // Pass 1 (parallel): distance and deviations from the heights alone; choose the level.
-        double rowMetresExact = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
-        double cosMax = Math.cos(Math.toRadians(Math.max(0, Math.abs(eye.latDeg()) - rangeMetres / 111_000.0 - 0.01)));
-        // The distance bound needs a fixed eye (a panorama; not a fly-through, whose eye moves).
-        double maxDistanceError = !Double.isNaN(cullBelowDeg) && exaggeration == 1
-                ? LevelOfDetail.DEFAULT_MAX_DISTANCE_ERROR : 0;
-        List<PatchWork> inRange = new ArrayList<>();
-        for (PatchWork w : candidates) {
-            // Nearest point of the patch to the eye, horizontally, as a lower bound (slightly short rows
-            // and columns): it decides both the range cut and the level.
-            double dr = Math.max(0, Math.max(w.row0 - eyeRow, eyeRow - (w.row0 + p))) * rowMetresExact * 0.995;
-            double dc = Math.max(0, Math.max(w.col0 - eyeCol, eyeCol - (w.col0 + p))) * rowMetresExact * cosMin * 0.995;
-            w.nearestMetres = Math.hypot(dr, dc);
-            // Farthest point, as an upper bound (long rows and columns: the cosine nearest the equator).
-            double fr = Math.max(Math.abs(w.row0 - eyeRow), Math.abs(w.row0 + p - eyeRow)) * rowMetresExact * 1.005;
-            double fc = Math.max(Math.abs(w.col0 - eyeCol), Math.abs(w.col0 + p - eyeCol)) * rowMetresExact * cosMax * 1.005;
-            w.farthestMetres = Math.hypot(fr, fc);
-            if (w.nearestMetres > rangeMetres + 2000) {
-                w.nearestMetres = Double.NaN; // beyond range: dropped
-            } else {
-                w.cacheKey = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + w.row0,
-                        Math.floorMod(globalCol0 + w.col0, 360L * mosaic.intervalsPerDegree()));
-                // Cached deviations hold only where this mosaic has every height of the patch too.
-                w.cacheable = cacheable(mosaic, w.row0, w.col0);
-                inRange.add(w);
+            List<Geometry> stale = detail.meshes() == null ? List.of() : detail.meshes().forgetChanged(mosaic);
+            List<PatchWork> inRange = patchesInRange();
+            chooseLevels(inRange);
+            int culled = 0;
+            if (!Double.isNaN(detail.cullBelowDeg()) && detail.exaggeration() == 1) {
+                culled = cull(inRange, mosaic, eye.eyeFrame(), eye.eyeAltitudeMetres(), refraction.coefficient(),
+                        detail.cullBelowDeg());
             }
+            java.util.Set<MeshCache.Key> inUse = new java.util.HashSet<>();
+            List<PatchWork> kept = withSkirts(inRange, inUse);
+            place(kept);
+            return assemble(kept, material, culled, stale, inUse);
         }
-        if (cache != null) {
-            cache.lookUp(inRange.stream().filter(w -> w.cacheable).toList(), w -> w.cacheKey, (w, raw) -> {
-                w.rawDeviations = raw;
-                w.fromCache = true;
-            });
-        }
-        DeviationStore disk = cache == null ? null : cache.disk();
-        dempano.util.Parallel.forEachIndex(inRange.size(), i -> { // measured or cached: costs differ per patch
-            PatchWork w = inRange.get(i);
-            if (w.rawDeviations == null) {
-                float[] heights = patchHeights(mosaic, w.row0, w.col0);
-                if (disk != null && w.cacheable) {
-                    long hashA = DeviationStore.hashA(heights), hashB = DeviationStore.hashB(heights);
-                    float[] kept = disk.get(w.cacheKey, hashA, hashB);
-                    if (kept == null) {
-                        kept = deviationsOf(heights);
-                        disk.put(w.cacheKey, hashA, hashB, kept);
+
+        /**
+         * The patches of the window not wholly beyond the range (with 2 km to spare), with their nearest and farthest
+         * ground distances as bounds and their cache keys.
+         */
+        private List<PatchWork> patchesInRange() {
+            int p = PATCH_INTERVALS;
+            List<PatchWork> inRange = new ArrayList<>();
+            for (int pr = r0; pr < r1; pr += p) {
+                for (int pc = c0; pc < c1; pc += p) {
+                    PatchWork w = new PatchWork();
+                    w.row0 = pr;
+                    w.col0 = pc;
+                    // Nearest point of the patch to the eye, horizontally, as a lower bound (slightly short rows
+                    // and columns): it decides both the range cut and the level.
+                    double dr = Math.max(0, Math.max(w.row0 - eyeRow, eyeRow - (w.row0 + p))) * rowMetresExact * 0.995;
+                    double dc = Math.max(0, Math.max(w.col0 - eyeCol, eyeCol - (w.col0 + p))) * rowMetresExact * cosMin * 0.995;
+                    w.nearestMetres = Math.hypot(dr, dc);
+                    if (w.nearestMetres > rangeMetres + 2000) {
+                        continue; // beyond range: dropped
                     }
-                    w.rawDeviations = kept;
-                } else {
-                    w.rawDeviations = deviationsOf(heights);
+                    // Farthest point, as an upper bound (long rows and columns: the cosine nearest the equator).
+                    double fr = Math.max(Math.abs(w.row0 - eyeRow), Math.abs(w.row0 + p - eyeRow)) * rowMetresExact * 1.005;
+                    double fc = Math.max(Math.abs(w.col0 - eyeCol), Math.abs(w.col0 + p - eyeCol)) * rowMetresExact * cosMax * 1.005;
+                    w.farthestMetres = Math.hypot(fr, fc);
+                    w.cacheKey = new DeviationCache.Key(mosaic.intervalsPerDegree(), globalRow0 + w.row0,
+                            Math.floorMod(globalCol0 + w.col0, 360L * mosaic.intervalsPerDegree()));
+                    // Cached deviations hold only where this mosaic has every height of the patch too.
+                    w.cacheable = cacheable(mosaic, w.row0, w.col0);
+                    inRange.add(w);
                 }
             }
-            w.deviations = new double[LEVELS];
-            // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
-            for (int level = 1; level < LEVELS; level++) {
-                w.deviations[level] = w.rawDeviations[level]
-                        + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
+            return inRange;
+        }
+
+        /**
+         * Pass 1 (parallel): each patch's deviations (cached, kept on disk, or measured) and, from them and its
+         * distance, its level.
+         */
+        private void chooseLevels(List<PatchWork> inRange) {
+            DeviationCache cache = detail.cache();
+            if (cache != null) {
+                cache.lookUp(inRange.stream().filter(w -> w.cacheable).toList(), w -> w.cacheKey, (w, raw) -> {
+                    w.rawDeviations = raw;
+                    w.fromCache = true;
+                });
             }
-            LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
-                    w.rawDeviations[LEVELS + 1], maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
-                    eye.eyeAltitudeMetres(), refraction.coefficient());
-            w.level = LevelOfDetail.chooseLevel(w.deviations, sight, pixelsPerDegree, maxErrorPx, maxDistanceError);
-        });
-        if (disk != null) {
-            disk.flush();
+            // The distance bound needs a fixed eye (a panorama; not a fly-through, whose eye moves).
+            double maxDistanceError = !Double.isNaN(detail.cullBelowDeg()) && detail.exaggeration() == 1
+                    ? LevelOfDetail.DEFAULT_MAX_DISTANCE_ERROR : 0;
+            DeviationStore disk = cache == null ? null : cache.disk();
+            dempano.util.Parallel.forEachIndex(inRange.size(), i -> { // measured or cached: costs differ per patch
+                PatchWork w = inRange.get(i);
+                if (w.rawDeviations == null) {
+                    float[] heights = patchHeights(mosaic, w.row0, w.col0);
+                    if (disk != null && w.cacheable) {
+                        long hashA = DeviationStore.hashA(heights), hashB = DeviationStore.hashB(heights);
+                        float[] kept = disk.get(w.cacheKey, hashA, hashB);
+                        if (kept == null) {
+                            kept = deviationsOf(heights);
+                            disk.put(w.cacheKey, hashA, hashB, kept);
+                        }
+                        w.rawDeviations = kept;
+                    } else {
+                        w.rawDeviations = deviationsOf(heights);
+                    }
+                }
+                w.deviations = new double[LEVELS];
+                // The earth curves under a coarse cell too: its flat facets sag below the drawn surface.
+                for (int level = 1; level < LEVELS; level++) {
+                    w.deviations[level] = w.rawDeviations[level]
+                            + LevelOfDetail.chordSagMetres((1 << level) * rowMetresExact, refraction.coefficient());
+                }
+                LevelOfDetail.Sight sight = new LevelOfDetail.Sight(w.nearestMetres, w.farthestMetres,
+                        w.rawDeviations[LEVELS + 1], maxDistanceError > 0 ? riseAwayFromEye(mosaic, w, eyeRow, eyeCol) : 0,
+                        eye.eyeAltitudeMetres(), refraction.coefficient());
+                w.level = LevelOfDetail.chooseLevel(w.deviations, sight, detail.pixelsPerDegree(), detail.maxErrorPx(),
+                        maxDistanceError);
+            });
+            if (disk != null) {
+                disk.flush();
+            }
+            if (cache != null) {
+                cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
+                        w -> w.rawDeviations);
+            }
         }
-        if (cache != null) {
-            cache.store(inRange.stream().filter(w -> w.cacheable && !w.fromCache).toList(), w -> w.cacheKey,
-                    w -> w.rawDeviations);
-        }
-        int culled = 0;
-        if (!Double.isNaN(cullBelowDeg) && exaggeration == 1) {
-            culled = cull(inRange, mosaic, frame, eye.eyeAltitudeMetres(), refraction.coefficient(), cullBelowDeg);
-        }
-        Map<Long, PatchWork> work = new HashMap<>();
-        for (PatchWork w : candidates) {
-            if (!Double.isNaN(w.nearestMetres)) {
+
+        /**
+         * Pass 2: skirts on the edges where the neighbour's level differs (equal levels share their edge vertices
+         * exactly: no crack), and each fine patch's cached geometry where the mesh cache has it (its key added to
+         * {@code inUse}). Hidden patches count as neighbours: their neighbours' skirts do not change (and cannot be
+         * seen there). Returns the patches not hidden.
+         */
+        private List<PatchWork> withSkirts(List<PatchWork> inRange, java.util.Set<MeshCache.Key> inUse) {
+            int p = PATCH_INTERVALS;
+            Map<Long, PatchWork> work = new HashMap<>();
+            for (PatchWork w : inRange) {
                 work.put(key(w.row0, w.col0), w);
             }
-        }
-        // Pass 2: skirts on the edges where the neighbour's level differs (equal levels share their
-        // edge vertices exactly: no crack). Hidden patches stay in `work`: their neighbours' skirts do
-        // not change (and cannot be seen there). A patch whose geometry is cached is not placed again.
-        List<PatchWork> kept = new ArrayList<>(work.values().stream().filter(w -> !w.hidden).toList());
-        java.util.Set<MeshCache.Key> inUse = new java.util.HashSet<>();
-        for (PatchWork w : kept) {
-            long[] sides = {key(w.row0 - p, w.col0), key(w.row0, w.col0 + p), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p)};
-            w.skirts = new double[4]; // north, east, south, west
-            for (int e = 0; e < 4; e++) {
-                PatchWork n = work.get(sides[e]);
-                if (n != null && n.level != w.level) {
-                    w.skirts[e] = w.errorMetres() + n.errorMetres() + 0.5;
+            MeshCache meshes = detail.meshes();
+            List<PatchWork> kept = new ArrayList<>(work.values().stream().filter(w -> !w.hidden).toList());
+            for (PatchWork w : kept) {
+                long[] sides = {key(w.row0 - p, w.col0), key(w.row0, w.col0 + p), key(w.row0 + p, w.col0), key(w.row0, w.col0 - p)};
+                w.skirts = new double[4]; // north, east, south, west
+                for (int e = 0; e < 4; e++) {
+                    PatchWork n = work.get(sides[e]);
+                    if (n != null && n.level != w.level) {
+                        w.skirts[e] = w.errorMetres() + n.errorMetres() + 0.5;
+                    }
+                }
+                if (meshes != null && w.cacheable && w.level < MERGED_LEVEL) {
+                    w.meshKey = new MeshCache.Key(mosaic.intervalsPerDegree(), w.cacheKey.globalRow(), w.cacheKey.globalCol(),
+                            w.level, w.skirts[0], w.skirts[1], w.skirts[2], w.skirts[3], detail.exaggeration());
+                    w.cached = meshes.get(w.meshKey);
+                    inUse.add(w.meshKey);
                 }
             }
-            if (meshes != null && w.cacheable && w.level < MERGED_LEVEL) {
-                w.meshKey = new MeshCache.Key(mosaic.intervalsPerDegree(), w.cacheKey.globalRow(), w.cacheKey.globalCol(),
-                        w.level, w.skirts[0], w.skirts[1], w.skirts[2], w.skirts[3], exaggeration);
-                w.cached = meshes.get(w.meshKey);
-                inUse.add(w.meshKey);
-            }
+            return kept;
         }
-        // Pass 3 (parallel): place the vertices of the patches not cached.
-        List<PatchWork> toPlace = kept.stream().filter(w -> w.cached == null).toList();
-        // Patches of every level: a full-resolution patch places hundreds of times the vertices of a coarse one.
-        // A patch drawn alone becomes its jME mesh (direct buffers) at once, so that its heap arrays die young: kept
-        // until every patch was placed, they were 150 MB of a cold Mount Washington render's heap, copied by the
-        // collector two or three times over.
-        dempano.util.Parallel.forEachIndex(toPlace.size(), i -> {
-            PatchWork w = toPlace.get(i);
-            PatchMesh placed = placer.mesh(w, w.skirts);
-            w.hull = placed.hull();
-            if (w.level >= MERGED_LEVEL) {
-                w.mesh = placed;
-            } else {
-                w.alone = PatchMesh.merge(List.of(placed));
-            }
-        });
 
-        // Coarse patches (few vertices each) are merged per block into one geometry: tens of
-        // thousands of tiny draw calls and buffers cost more than their triangles.
-        EyePlacement placement = new EyePlacement(eye, refraction);
-        if (material != null) {
-            placement.apply(material);
-        }
-        Node root = new Node("terrain");
-        Map<Long, TerrainQuad> quads = new HashMap<>();
-        Map<Long, List<PatchMesh>> merged = new HashMap<>();
-        List<Geometry> transientParts = new ArrayList<>();
-        List<Geometry> drawn = new ArrayList<>();
-        long vertices = 0, triangles = 0;
-        int reused = 0;
-        int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(p) + 1];
-        for (PatchWork w : kept) {
-            int br = r0 + (w.row0 - r0) / BLOCK_INTERVALS * BLOCK_INTERVALS, bc = c0 + (w.col0 - c0) / BLOCK_INTERVALS * BLOCK_INTERVALS;
-            TerrainQuad quad = quads.computeIfAbsent(key(br, bc), k -> {
-                TerrainQuad q = new TerrainQuad();
-                q.setName("block-" + br + "-" + bc);
-                root.attachChild(q);
-                return q;
-            });
-            patchesPerLevel[w.level]++;
-            if (w.cached != null) {
-                Geometry g = w.cached.geometry();
-                vertices += g.getMesh().getVertexCount();
-                triangles += g.getMesh().getTriangleCount();
-                reused++;
-                attach(quad, g, w.cached.hull(), material, placement, drawn);
-                continue;
+        /**
+         * Pass 3 (parallel): the vertices of the patches not cached. Patches of every level: a full-resolution patch
+         * places hundreds of times the vertices of a coarse one. A patch drawn alone becomes its jME mesh (direct
+         * buffers) at once, so that its heap arrays die young: kept until every patch was placed, they were 150 MB of
+         * a cold Mount Washington render's heap, copied by the collector two or three times over.
+         */
+        private void place(List<PatchWork> kept) {
+            int nr = r1 - r0 + 1 + PATCH_INTERVALS, nc = c1 - c0 + 1 + PATCH_INTERVALS;
+            double[] sinLat = new double[nr], cosLat = new double[nr], sinLon = new double[nc], cosLon = new double[nc];
+            for (int r = 0; r < nr; r++) {
+                double phi = Math.toRadians(mosaic.latOfRow(clampRow(mosaic, r0 + r)));
+                sinLat[r] = Math.sin(phi);
+                cosLat[r] = Math.cos(phi);
             }
-            if (w.level >= MERGED_LEVEL) {
-                vertices += w.mesh.vertexCount();
-                triangles += w.mesh.indices().length / 3;
-                merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
-            } else {
-                vertices += w.alone.getVertexCount();
-                triangles += w.alone.getTriangleCount();
-                TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
-                patch.setUserData(FULL_RESOLUTION, w.level == 0 && exaggeration == 1);
-                patch.setMesh(w.alone);
-                attach(quad, patch, w.hull, material, placement, drawn);
-                if (w.meshKey != null) {
-                    meshes.put(w.meshKey, new MeshCache.Entry(patch, w.hull, w.alone.getVertexCount()));
+            for (int c = 0; c < nc; c++) {
+                double lam = Math.toRadians(mosaic.wrappedLonOfCol(clampCol(mosaic, c0 + c)));
+                sinLon[c] = Math.sin(lam);
+                cosLon[c] = Math.cos(lam);
+            }
+            Placer placer = new Placer(mosaic, r0, c0, sinLat, cosLat, sinLon, cosLon, detail.exaggeration());
+            List<PatchWork> toPlace = kept.stream().filter(w -> w.cached == null).toList();
+            dempano.util.Parallel.forEachIndex(toPlace.size(), i -> {
+                PatchWork w = toPlace.get(i);
+                PatchMesh placed = placer.mesh(w, w.skirts);
+                w.hull = placed.hull();
+                if (w.level >= MERGED_LEVEL) {
+                    w.mesh = placed;
                 } else {
-                    transientParts.add(patch);
+                    w.alone = PatchMesh.merge(List.of(placed));
+                }
+            });
+        }
+
+        /**
+         * The scene: a node per block, a geometry per fine patch (new ones put in the mesh cache where keyed) and one
+         * per block for its coarse patches merged (tens of thousands of tiny draw calls and buffers cost more than
+         * their triangles), each bound in the eye's frame, their vertices numbered ({@link #VERTEX_BASE}); the
+         * mesh cache then lets go of what the scene does not use ({@code inUse}).
+         */
+        private Terrain assemble(List<PatchWork> kept, Material material, int culled, List<Geometry> stale,
+                                 java.util.Set<MeshCache.Key> inUse) {
+            int p = PATCH_INTERVALS;
+            MeshCache meshes = detail.meshes();
+            EyePlacement placement = new EyePlacement(eye, refraction);
+            if (material != null) {
+                applyEye(material, placement);
+            }
+            Node root = new Node("terrain");
+            Map<Long, TerrainQuad> quads = new HashMap<>();
+            Map<Long, List<PatchMesh>> merged = new HashMap<>();
+            List<Geometry> transientParts = new ArrayList<>();
+            List<Geometry> drawn = new ArrayList<>();
+            long vertices = 0, triangles = 0;
+            int reused = 0;
+            int[] patchesPerLevel = new int[Integer.numberOfTrailingZeros(p) + 1];
+            for (PatchWork w : kept) {
+                int br = r0 + (w.row0 - r0) / BLOCK_INTERVALS * BLOCK_INTERVALS, bc = c0 + (w.col0 - c0) / BLOCK_INTERVALS * BLOCK_INTERVALS;
+                TerrainQuad quad = quads.computeIfAbsent(key(br, bc), k -> {
+                    TerrainQuad q = new TerrainQuad();
+                    q.setName("block-" + br + "-" + bc);
+                    root.attachChild(q);
+                    return q;
+                });
+                patchesPerLevel[w.level]++;
+                if (w.cached != null) {
+                    Geometry g = w.cached.geometry();
+                    vertices += g.getMesh().getVertexCount();
+                    triangles += g.getMesh().getTriangleCount();
+                    reused++;
+                    attach(quad, g, w.cached.hull(), material, placement, drawn);
+                    continue;
+                }
+                if (w.level >= MERGED_LEVEL) {
+                    vertices += w.mesh.vertexCount();
+                    triangles += w.mesh.indices().length / 3;
+                    merged.computeIfAbsent(key(br, bc), k -> new ArrayList<>()).add(w.mesh);
+                } else {
+                    vertices += w.alone.getVertexCount();
+                    triangles += w.alone.getTriangleCount();
+                    TerrainPatch patch = new TerrainPatch("patch-" + w.row0 + "-" + w.col0 + "-level-" + w.level);
+                    patch.setUserData(FULL_RESOLUTION, w.level == 0 && detail.exaggeration() == 1);
+                    patch.setMesh(w.alone);
+                    attach(quad, patch, w.hull, material, placement, drawn);
+                    if (w.meshKey != null) {
+                        meshes.put(w.meshKey, new MeshCache.Entry(patch, w.hull, w.alone.getVertexCount()));
+                    } else {
+                        transientParts.add(patch);
+                    }
                 }
             }
+            for (Map.Entry<Long, List<PatchMesh>> e : merged.entrySet()) {
+                TerrainQuad quad = quads.get(e.getKey());
+                TerrainPatch patch = new TerrainPatch(quad.getName() + "-coarse-" + e.getValue().size() + "-patches");
+                patch.setMesh(PatchMesh.merge(e.getValue()));
+                attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement, drawn);
+                transientParts.add(patch);
+            }
+            // Vertices numbered for this build (a cached geometry carries the numbers of its latest build).
+            int[] bases = vertexBases(drawn);
+            for (int g = 0; g < drawn.size(); g++) {
+                drawn.get(g).addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int,
+                        VERTEX_BASE, bases[g]));
+            }
+            List<Geometry> evicted = new ArrayList<>(stale);
+            if (meshes != null) {
+                evicted.addAll(meshes.trim(inUse));
+            }
+            root.updateGeometricState();
+            return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
+                    transientParts, evicted, List.copyOf(drawn));
         }
-        for (Map.Entry<Long, List<PatchMesh>> e : merged.entrySet()) {
-            TerrainQuad quad = quads.get(e.getKey());
-            TerrainPatch patch = new TerrainPatch(quad.getName() + "-coarse-" + e.getValue().size() + "-patches");
-            patch.setMesh(PatchMesh.merge(e.getValue()));
-            attach(quad, patch, PatchMesh.hull(e.getValue()), material, placement, drawn);
-            transientParts.add(patch);
-        }
-        // Vertices numbered for this build (a cached geometry carries the numbers of its latest build).
-        int[] bases = vertexBases(drawn);
-        for (int g = 0; g < drawn.size(); g++) {
-            drawn.get(g).addMatParamOverride(new com.jme3.material.MatParamOverride(com.jme3.shader.VarType.Int,
-                    VERTEX_BASE, bases[g]));
-        }
-        List<Geometry> evicted = new ArrayList<>(stale);
-        if (meshes != null) {
-            evicted.addAll(meshes.trim(inUse));
-        }
-        root.updateGeometricState();
-        return new Terrain(root, vertices, triangles, quads.size(), kept.size(), patchesPerLevel, culled, reused,
-                transientParts, evicted, List.copyOf(drawn));
+    }
+
+    /** Sets the eye's uniforms ({@link EyePlacement#uniforms()}) on a terrain material. */
+    public static void applyEye(Material m, EyePlacement eye) {
+        EyePlacement.Uniforms u = eye.uniforms();
+        m.setVector3("EyeHigh", new com.jme3.math.Vector3f(u.eyeHigh()[0], u.eyeHigh()[1], u.eyeHigh()[2]));
+        m.setVector3("EyeLow", new com.jme3.math.Vector3f(u.eyeLow()[0], u.eyeLow()[1], u.eyeLow()[2]));
+        m.setVector3("EyeFoot", new com.jme3.math.Vector3f(u.eyeFoot()[0], u.eyeFoot()[1], u.eyeFoot()[2]));
+        float[] r = u.ecefToEye();
+        m.setParam("EcefToEye", com.jme3.shader.VarType.Matrix3,
+                new com.jme3.math.Matrix3f(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]));
+        m.setFloat("LiftPerSquareMetre", u.liftPerSquareMetre());
+        m.setFloat("MeanRadius", (float) Ellipsoid.MEAN_RADIUS_METRES);
     }
 
     /**
@@ -469,7 +539,10 @@ public final class TerrainBuilder {
         }
         g.clearMatParamOverrides(); // numbered once the scene is complete (build)
         drawn.add(g);
-        g.setModelBound(placement.bound(hull));
+        double[] box = placement.bound(hull);
+        g.setModelBound(new com.jme3.bounding.BoundingBox(
+                new com.jme3.math.Vector3f((float) box[0], (float) box[1], (float) box[2]),
+                new com.jme3.math.Vector3f((float) box[3], (float) box[4], (float) box[5])));
         g.setUserData(EYE_BOUND, true);
         g.setUserData(CULL_BACK_FACES, true);
         quad.attachChild(g);

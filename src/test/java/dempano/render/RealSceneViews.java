@@ -43,7 +43,7 @@ record RealSceneViews(Viewpoint eye, Refraction refraction, double rangeMetres, 
     RealSceneViews drawnBy(OffscreenRenderer gl) {
         Material material = gl.newTerrainMaterial(rangeMetres);
         material.setBoolean("DistanceOnly", true);
-        new EyePlacement(eye, refraction).apply(material);
+        TerrainBuilder.applyEye(material, new EyePlacement(eye, refraction));
         for (Geometry g : terrain.drawn()) {
             g.setMaterial(material);
         }
