@@ -119,14 +119,104 @@ public final class PhotoJob {
      * @throws IOException              when the outputs cannot be written (the message names the file)
      */
     public static Result run(PanoramaRenderer renderer, Input in, Log log) throws IOException {
-        PhotoOverrides o = in.overrides();
-        PhotoMetadata meta;
-        BufferedImage photo = null;
-        if (in.image() != null) {
+        return new Job(renderer, in, log).run();
+    }
+
+    /** A photo as read: its metadata and, where this Java decodes them, its pixels as displayed (else null). */
+    private record Photo(PhotoMetadata meta, BufferedImage pixels) {
+    }
+
+    /** What an estimate adds to the files: the camera it gives, its overlay and its JSON. */
+    private record Estimated(PhotoCamera camera, BufferedImage overlay, String json) {
+    }
+
+    /** One run of {@link #run}, its steps in order: the photo read, the camera resolved, estimated, rendered, written. */
+    private static final class Job {
+        final PanoramaRenderer renderer;
+        final Input in;
+        final Log log;
+
+        Job(PanoramaRenderer renderer, Input in, Log log) {
+            this.renderer = renderer;
+            this.in = in;
+            this.log = log;
+        }
+
+        Result run() throws IOException {
+            Photo photo = readPhoto();
+            PhotoMetadata meta = photo.meta();
+            PhotoOverrides given = in.overrides();
+            // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
+            PhotoOrientation open;
+            try {
+                open = photo.pixels() == null ? new PhotoOrientation(false, false, false, false, false)
+                        : PhotoOrientation.open(meta, given, !Double.isNaN(in.headingRangeDeg()));
+            } catch (PhotoMetadataException e) { // a value out of range (a field of view of 0°), named with its file
+                throw new IllegalArgumentException(e.getMessage(), e);
+            }
+            PhotoOverrides o = given;
+            if (open.any()) {
+                log.progress("estimating from the skyline: " + String.join(", ", open.names())
+                        + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
+                o = open.placeholders(meta, o);
+            }
+            PhotoCamera camera = resolve(meta, o);
+            // Where the altitude would be the EXIF one, the DEM's surface under it (once: the position does not change).
+            double gpsGround = gpsGround(renderer, in.settings(), meta, o, camera);
+            camera = Double.isNaN(gpsGround) ? camera : resolve(meta, o, gpsGround, java.util.Set.of());
+            // The lines of the values to be estimated (placeholders until then) are not news: left out.
+            List<String> withPlaceholdersNamed = resolve(meta, o, gpsGround, open.estimatedFlags(given, null)).provenance();
+            for (int i = 0; i < withPlaceholdersNamed.size(); i++) {
+                if (withPlaceholdersNamed.get(i).equals(camera.provenance().get(i))) {
+                    log.progress(withPlaceholdersNamed.get(i));
+                }
+            }
+            PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
+            if (in.ranges().hasFovRange() && !open.hfov()) {
+                log.progress("the field-of-view range " + in.ranges().describeFov(camera.intrinsics().widthPx(),
+                        camera.intrinsics().heightPx()) + " not used: the field of view is "
+                        + (photo.pixels() == null ? "given" : "known (flag or metadata)") + ", not estimated");
+            }
+            Estimated estimated = null;
+            if (open.any()) {
+                estimated = estimate(photo, given, open, camera, gpsGround, settings);
+                camera = estimated.camera();
+            }
+            CameraImage rendered = render(camera, settings, photo.pixels() != null);
+            List<SummitSighting> sightings = null;
+            if (in.summits() != null) {
+                SummitList placed = SummitProjector.placedOnDem(in.summits(), renderer.dem(), rendered.metadata());
+                SummitProjector.warnings(placed, rendered.metadata()).forEach(w -> log.progress("warning: " + w));
+                sightings = SummitProjector.withDem(SummitProjector.project(rendered, placed), renderer.dem());
+            }
+            try (OutputSet set = OutputSet.open(in.outPrefix())) {
+                set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
+                List<CameraWriter.ExtraFile> orientationFiles = estimated == null ? List.of() : List.of(
+                        new CameraWriter.ExtraFile("-orientation.png", pngBytes(estimated.overlay())),
+                        new CameraWriter.ExtraFile("-orientation.json",
+                                (estimated.json() + "\n").getBytes(StandardCharsets.UTF_8)));
+                List<Path> files = CameraWriter.stage(set, rendered,
+                        new CameraWriter.Extras(photo.pixels(), sightings, camera.provenance(), orientationFiles));
+                set.commit();
+                return new Result(camera, rendered, files);
+            }
+        }
+
+        /** The photo's metadata and pixels, or a camera from the flags alone (no image). */
+        private Photo readPhoto() {
+            if (in.image() == null) {
+                if (in.widthPx() == null || in.heightPx() == null || in.widthPx() < 1 || in.heightPx() < 1) {
+                    throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
+                            + " camera from flags alone");
+                }
+                return new Photo(new PhotoMetadata("camera from flags", in.widthPx(), in.heightPx(), 1, PhotoMetadata.Gps.NONE,
+                        PhotoMetadata.Lens.NONE, PhotoMetadata.XmpAttitude.NONE, List.of()), null);
+            }
             if (in.widthPx() != null || in.heightPx() != null) {
                 throw new IllegalArgumentException("--width-px and --height-px are for a camera without a photo: the"
                         + " photo's own size is used");
             }
+            PhotoMetadata meta;
             try {
                 meta = PhotoMetadata.read(in.image());
             } catch (PhotoMetadataException e) {
@@ -139,64 +229,30 @@ public final class PhotoJob {
                 throw new IllegalArgumentException(in.image() + ": corrupt photograph, its pixels cannot be decoded ("
                         + e.getMessage() + ")", e);
             }
-            if (stored != null) {
-                photo = CameraWriter.displayed(stored, meta.orientation());
-                meta = meta.withDecodedSize(photo.getWidth(), photo.getHeight());
-            } else {
+            if (stored == null) {
                 log.progress(in.image() + ": its metadata is read, but this Java has no decoder for its pixels (convert"
                         + " it to JPEG or PNG): nothing is estimated from the photo and it is not overlaid");
+                return new Photo(meta, null);
             }
-        } else {
-            if (in.widthPx() == null || in.heightPx() == null || in.widthPx() < 1 || in.heightPx() < 1) {
-                throw new IllegalArgumentException("no photo: give IMAGE, or --width-px and --height-px (≥ 1) for a"
-                        + " camera from flags alone");
+            BufferedImage displayed = CameraWriter.displayed(stored, meta.orientation());
+            return new Photo(meta.withDecodedSize(displayed.getWidth(), displayed.getHeight()), displayed);
+        }
+
+        /**
+         * The values {@code open} leaves to the photo, estimated from its skyline: the camera with them, the
+         * provenance saying where each came from, and the orientation files' contents.
+         */
+        private Estimated estimate(Photo photo, PhotoOverrides given, PhotoOrientation open, PhotoCamera camera,
+                                   double gpsGround, PanoramaRequest settings) {
+            PhotoMetadata meta = photo.meta();
+            if (!open.hfov()) {
+                // A known field of view too wide to render fails now, not after seconds of estimating (level, as placed).
+                try {
+                    dempano.panorama.ViewLayout.checkCoverable(CameraRequest.of(camera).view(), settings.supersampling());
+                } catch (IllegalArgumentException e) {
+                    throw tooWideSaysWhy(e, camera);
+                }
             }
-            meta = new PhotoMetadata("camera from flags", in.widthPx(), in.heightPx(), 1, PhotoMetadata.Gps.NONE,
-                    PhotoMetadata.Lens.NONE, PhotoMetadata.XmpAttitude.NONE, List.of());
-        }
-        // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
-        PhotoOrientation open;
-        try {
-            open = photo == null ? new PhotoOrientation(false, false, false, false, false)
-                    : PhotoOrientation.open(meta, o, !Double.isNaN(in.headingRangeDeg()));
-        } catch (PhotoMetadataException e) { // a value out of range (a field of view of 0°), named with its file
-            throw new IllegalArgumentException(e.getMessage(), e);
-        }
-        PhotoOverrides given = o;
-        if (open.any()) {
-            log.progress("estimating from the skyline: " + String.join(", ", open.names())
-                    + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
-            o = open.placeholders(meta, o);
-        }
-        PhotoCamera camera = resolve(meta, o);
-        // Where the altitude would be the EXIF one, the DEM's surface under it (once: the position does not change).
-        double gpsGround = gpsGround(renderer, in.settings(), meta, o, camera);
-        camera = Double.isNaN(gpsGround) ? camera : resolve(meta, o, gpsGround, java.util.Set.of());
-        // The lines of the values to be estimated (placeholders until then) are not news: left out.
-        List<String> withPlaceholdersNamed = resolve(meta, o, gpsGround, open.estimatedFlags(given, null)).provenance();
-        for (int i = 0; i < withPlaceholdersNamed.size(); i++) {
-            if (withPlaceholdersNamed.get(i).equals(camera.provenance().get(i))) {
-                log.progress(withPlaceholdersNamed.get(i));
-            }
-        }
-        PanoramaRequest settings = atCamera(in.settings(), camera.pose().latDeg(), camera.pose().lonDeg());
-        BufferedImage orientationOverlay = null;
-        String orientationJson = null;
-        if (in.ranges().hasFovRange() && !open.hfov()) {
-            log.progress("the field-of-view range " + in.ranges().describeFov(camera.intrinsics().widthPx(),
-                    camera.intrinsics().heightPx()) + " not used: the field of view is "
-                    + (photo == null ? "given" : "known (flag or metadata)") + ", not estimated");
-        }
-        if (open.any() && !open.hfov()) {
-            // A known field of view too wide to render fails now, not after seconds of estimating (level, as placed).
-            try {
-                dempano.panorama.ViewLayout.checkCoverable(CameraRequest.of(camera).view(), settings.supersampling());
-            } catch (IllegalArgumentException e) {
-                throw tooWideSaysWhy(e, camera);
-            }
-        }
-        if (open.any()) {
-            PhotoOrientation.Result est;
             // The range is a prior only around a heading that was given (override or metadata).
             double headingRangeDeg = PhotoOrientation.headingGiven(meta, given) ? in.headingRangeDeg() : Double.NaN;
             double priorHeadingDeg = camera.pose().orientation().headingDeg();
@@ -204,11 +260,12 @@ public final class PhotoJob {
                 log.progress("--heading-range-deg " + PhotoMetadata.num(in.headingRangeDeg()) + " not used: no heading"
                         + " (flag or EXIF compass) to search around; every heading is searched");
             }
+            PhotoOrientation.Result est;
             try {
                 est = open.estimate(renderer, settings.withOffsetMetres(camera.pose().offsetMetres())
                                 .withAltitudeMetres(camera.pose().altitudeMetres())
                                 .withEyeHeightMetres(camera.pose().cameraHeightMetres()),
-                        photo, camera, in.ranges().withHeadingRangeDeg(headingRangeDeg));
+                        photo.pixels(), camera, in.ranges().withHeadingRangeDeg(headingRangeDeg));
             } catch (dempano.InsufficientMemoryException e) {
                 // The panorama matched against has a fixed grid: --ppd and --elevation-range are not the photo's to lower.
                 throw new dempano.InsufficientMemoryException(e.estimate().matchPanoramaMessage(Runtime.getRuntime().maxMemory(),
@@ -236,52 +293,38 @@ public final class PhotoJob {
                         ? "widen --heading-range-deg, or check the position" : "give --heading-range-deg (e.g. 20) to search"
                         + " around it, as for a compass"));
             }
-            camera = resolve(meta, open.apply(given, est.estimate(), camera.pose()), gpsGround,
-                    open.estimatedFlags(given, est.estimate()));
-            List<String> prov = new ArrayList<>(camera.provenance());
+            PhotoCamera estimated = resolve(meta, open.apply(given, e, camera.pose()), gpsGround,
+                    open.estimatedFlags(given, e));
+            List<String> prov = new ArrayList<>(estimated.provenance());
             if (!Double.isNaN(headingRangeDeg)) {
                 prov.add(String.format(java.util.Locale.ROOT, "heading searched within ± %s° of %s° (%s)",
                         PhotoMetadata.num(headingRangeDeg), PhotoMetadata.num(priorHeadingDeg), Double.isNaN(given.headingDeg())
                                 ? "the photo's metadata" : PhotoOverrides.HEADING));
             }
             if (open.hfov() && in.ranges().hasFovRange()) {
-                prov.add("field of view searched within " + in.ranges().describeFov(camera.intrinsics().widthPx(),
-                        camera.intrinsics().heightPx()));
+                prov.add("field of view searched within " + in.ranges().describeFov(estimated.intrinsics().widthPx(),
+                        estimated.intrinsics().heightPx()));
             }
             prov.add(line);
-            camera = new PhotoCamera(camera.intrinsics(), camera.pose(), prov);
-            orientationOverlay = est.overlay();
             com.google.gson.Gson gson = dempano.io.Json.writer();
-            com.google.gson.JsonObject json = gson.toJsonTree(est.estimate()).getAsJsonObject();
+            com.google.gson.JsonObject json = gson.toJsonTree(e).getAsJsonObject();
             json.addProperty("matchedWidthPx", est.matchedWidthPx()); // the image matched in (MatchImage)
             json.addProperty("matchedHeightPx", est.matchedHeightPx());
-            orientationJson = gson.toJson(json);
+            return new Estimated(new PhotoCamera(estimated.intrinsics(), estimated.pose(), prov), est.overlay(),
+                    gson.toJson(json));
         }
-        CameraImage rendered;
-        try {
-            rendered = renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
-        } catch (dempano.InsufficientMemoryException e) {
-            // A photo's size is its own: the camera-from-flags advice (--width-px/--height-px) is refused with a photo.
-            throw photo == null ? e : new dempano.InsufficientMemoryException(
-                    e.estimate().photoMessage(Runtime.getRuntime().maxMemory()), e.estimate());
-        } catch (IllegalArgumentException e) {
-            throw tooWideSaysWhy(e, camera);
-        }
-        List<SummitSighting> sightings = null;
-        if (in.summits() != null) {
-            SummitList placed = SummitProjector.placedOnDem(in.summits(), renderer.dem(), rendered.metadata());
-            SummitProjector.warnings(placed, rendered.metadata()).forEach(w -> log.progress("warning: " + w));
-            sightings = SummitProjector.withDem(SummitProjector.project(rendered, placed), renderer.dem());
-        }
-        try (OutputSet set = OutputSet.open(in.outPrefix())) {
-            set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
-            List<CameraWriter.ExtraFile> orientationFiles = orientationOverlay == null ? List.of() : List.of(
-                    new CameraWriter.ExtraFile("-orientation.png", pngBytes(orientationOverlay)),
-                    new CameraWriter.ExtraFile("-orientation.json", (orientationJson + "\n").getBytes(StandardCharsets.UTF_8)));
-            List<Path> files = CameraWriter.stage(set, rendered,
-                    new CameraWriter.Extras(photo, sightings, camera.provenance(), orientationFiles));
-            set.commit();
-            return new Result(camera, rendered, files);
+
+        /** The camera view, its errors as this photo's: its own size, its field of view's source. */
+        private CameraImage render(PhotoCamera camera, PanoramaRequest settings, boolean hasPhoto) {
+            try {
+                return renderer.render(CameraRequest.of(camera).withSettings(settings), log::progress);
+            } catch (dempano.InsufficientMemoryException e) {
+                // A photo's size is its own: the camera-from-flags advice (--width-px/--height-px) is refused with a photo.
+                throw !hasPhoto ? e : new dempano.InsufficientMemoryException(
+                        e.estimate().photoMessage(Runtime.getRuntime().maxMemory()), e.estimate());
+            } catch (IllegalArgumentException e) {
+                throw tooWideSaysWhy(e, camera);
+            }
         }
     }
 
