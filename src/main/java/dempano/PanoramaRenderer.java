@@ -737,9 +737,7 @@ public final class PanoramaRenderer implements AutoCloseable {
         List<String> used = new ArrayList<>(), missing = new ArrayList<>();
         mosaic.tilesUsed().forEach(id -> used.add(id.name()));
         mosaic.tilesMissing().forEach(id -> missing.add(id.name()));
-        return new PanoramaMetadata(eye.latDeg(), eye.lonDeg(), eye.groundElevationMetres(),
-                eye.offsetMetres(), eye.standingAltitudeMetres(), eye.eyeHeightMetres(), eye.eyeAltitudeMetres(),
-                req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), drawing.nearMetres(), drawing.farMetres(),
+        return new PanoramaMetadata(eye, req.rangeMetres(), req.refraction().coefficient(), req.depthMode(), drawing.nearMetres(), drawing.farMetres(),
                 drawing.views(), drawing.viewWidthPx(), drawing.viewHeightPx(), used, missing, warnings, timings, glRenderer(),
                 drawing.lodErrorPx(), drawing.triangles(), scene.adjusted().move(), demSources(mosaic));
     }

@@ -6,13 +6,8 @@ import java.util.Map;
 /**
  * How a panorama was made: everything needed to interpret its pixels, and what it cost.
  *
- * @param latDeg                viewpoint latitude, degrees
- * @param lonDeg                viewpoint longitude, degrees
- * @param groundElevationMetres DEM height at the viewpoint, metres
- * @param offsetMetres          altitude correction added to the DEM height (NaN if an absolute altitude was given)
- * @param standingAltitudeMetres ground the observer stands on, metres
- * @param eyeHeightMetres       eye above the standing altitude, metres
- * @param eyeAltitudeMetres     the eye, metres above sea level
+ * @param viewpoint             the eye the panorama was drawn from (after any automatic correction: see
+ *                              {@code viewpointMove}); its fields are also this record's own accessors below
  * @param rangeMetres           range of sight, metres
  * @param refractionCoefficient k
  * @param depthMode             how distances were obtained
@@ -34,14 +29,51 @@ import java.util.Map;
  * @param demSources            per tile used, each source that served samples of it, with the vertical datum
  *                              of its heights (several per tile where later DEM sources filled voids)
  */
-public record PanoramaMetadata(double latDeg, double lonDeg, double groundElevationMetres, double offsetMetres,
-                               double standingAltitudeMetres, double eyeHeightMetres, double eyeAltitudeMetres,
-                               double rangeMetres, double refractionCoefficient, DepthMode depthMode,
+public record PanoramaMetadata(dempano.geo.Viewpoint viewpoint, double rangeMetres, double refractionCoefficient, DepthMode depthMode,
                                double nearMetres, double farMetres, int views, int viewWidthPx, int viewHeightPx,
                                List<String> tilesUsed, List<String> tilesMissing, List<String> warnings,
                                Map<String, Double> timingsMillis, String glRenderer,
                                double lodErrorPx, long terrainTriangles, dempano.geo.ViewpointMove viewpointMove,
                                List<TileSource> demSources) {
+    public PanoramaMetadata {
+        java.util.Objects.requireNonNull(viewpoint, "viewpoint");
+    }
+
+    /** Viewpoint latitude, degrees. */
+    public double latDeg() {
+        return viewpoint.latDeg();
+    }
+
+    /** Viewpoint longitude, degrees. */
+    public double lonDeg() {
+        return viewpoint.lonDeg();
+    }
+
+    /** DEM height at the viewpoint, metres. */
+    public double groundElevationMetres() {
+        return viewpoint.groundElevationMetres();
+    }
+
+    /** Altitude correction added to the DEM height, metres (NaN if an absolute altitude was given). */
+    public double offsetMetres() {
+        return viewpoint.offsetMetres();
+    }
+
+    /** Ground the observer stands on, metres above sea level. */
+    public double standingAltitudeMetres() {
+        return viewpoint.standingAltitudeMetres();
+    }
+
+    /** Eye above the standing altitude, metres. */
+    public double eyeHeightMetres() {
+        return viewpoint.eyeHeightMetres();
+    }
+
+    /** The eye, metres above sea level. */
+    public double eyeAltitudeMetres() {
+        return viewpoint.eyeAltitudeMetres();
+    }
+
     /**
      * One source's share of one tile.
      *

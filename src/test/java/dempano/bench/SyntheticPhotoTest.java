@@ -38,7 +38,7 @@ class SyntheticPhotoTest {
                 lon[r * W + c] = terrain ? (float) lonOfAzimuth.applyAsDouble(g.azimuthOfColumn(c)) : Float.NaN;
             }
         }
-        PanoramaMetadata m = new PanoramaMetadata(44.5, 7.5, 1000, 0, 1000, 2, 1002, 50_000, 0.13, DepthMode.SHADER_RANGE,
+        PanoramaMetadata m = new PanoramaMetadata(new dempano.geo.Viewpoint(44.5, 7.5, 1000, 0, 1000, 2), 50_000, 0.13, DepthMode.SHADER_RANGE,
                 1, 50_000, 8, 100, 100, List.of(), List.of(), List.of(), Map.of(), "test", 0, 0, null, List.of());
         return new Panorama(g, null, d, layers ? Map.of(Layer.LATITUDE, lat, Layer.LONGITUDE, lon) : Map.of(), m);
     }

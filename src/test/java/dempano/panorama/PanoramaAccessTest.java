@@ -29,7 +29,7 @@ class PanoramaAccessTest {
                 d[r * W + c] = 1000f * c + r;
             }
         }
-        PanoramaMetadata m = new PanoramaMetadata(46, 8, 1000, 0, 1000, 2, 1002, 100_000, 0.13, DepthMode.SHADER_RANGE,
+        PanoramaMetadata m = new PanoramaMetadata(new dempano.geo.Viewpoint(46, 8, 1000, 0, 1000, 2), 100_000, 0.13, DepthMode.SHADER_RANGE,
                 1, 100_000, 8, 100, 100, List.of(), List.of(), List.of(), Map.of(), "test", 0, 0, null, List.of());
         return new Panorama(G, colour ? argb : null, distance ? d : null, Map.of(), m);
     }
