@@ -208,13 +208,38 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
     /** A GPSAltitude beyond ±this, metres, is taken as garbage (4294967295 stands for "unknown" in some writers). */
     static final double MAX_GPS_ALTITUDE_METRES = 100_000;
 
-    /** The first {directory class, width tag, height tag} of the list that the metadata has both of; {0, 0} if none. */
-    @SuppressWarnings("unchecked")
-    private static int[] firstSize(Metadata metadata, Object[]... candidates) {
-        for (Object[] c : candidates) {
-            Directory d = metadata.getFirstDirectoryOfType((Class<? extends Directory>) c[0]);
-            if (d != null && d.getInteger((Integer) c[1]) != null && d.getInteger((Integer) c[2]) != null) {
-                return new int[] {d.getInteger((Integer) c[1]), d.getInteger((Integer) c[2])};
+    /** Where a format keeps an image's size: the directory and its width and height tags. */
+    private record SizeTags(Class<? extends Directory> directory, int widthTag, int heightTag) {
+    }
+
+    /**
+     * Where the stored size is read, first found first: the JPEG and PNG headers; other formats' headers (GIF, BMP,
+     * WebP): the size their pixels will have, before the EXIF sub-IFD's (a resized file often keeps the camera's
+     * there: a WebP was rendered at it); a TIFF's first image last (in a raw file that is often a small preview, the
+     * EXIF sub-IFD the sensor's image).
+     */
+    private static final List<SizeTags> SIZE_TAGS = List.of(
+            new SizeTags(JpegDirectory.class, JpegDirectory.TAG_IMAGE_WIDTH, JpegDirectory.TAG_IMAGE_HEIGHT),
+            new SizeTags(PngDirectory.class, PngDirectory.TAG_IMAGE_WIDTH, PngDirectory.TAG_IMAGE_HEIGHT),
+            new SizeTags(com.drew.metadata.gif.GifHeaderDirectory.class, com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_WIDTH,
+                    com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_HEIGHT),
+            new SizeTags(com.drew.metadata.bmp.BmpHeaderDirectory.class, com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_WIDTH,
+                    com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_HEIGHT),
+            new SizeTags(com.drew.metadata.webp.WebpDirectory.class, com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_WIDTH,
+                    com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_HEIGHT),
+            new SizeTags(ExifSubIFDDirectory.class, ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH,
+                    ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT),
+            new SizeTags(ExifIFD0Directory.class, ExifIFD0Directory.TAG_IMAGE_WIDTH, ExifIFD0Directory.TAG_IMAGE_HEIGHT));
+
+    /** The stored width and height of {@link #SIZE_TAGS}' first place that has both; {0, 0} if none. */
+    private static int[] storedSize(Metadata metadata) {
+        for (SizeTags t : SIZE_TAGS) {
+            Directory d = metadata.getFirstDirectoryOfType(t.directory());
+            if (d != null) {
+                Integer width = d.getInteger(t.widthTag()), height = d.getInteger(t.heightTag());
+                if (width != null && height != null) {
+                    return new int[] {width, height};
+                }
             }
         }
         return new int[] {0, 0};
@@ -228,35 +253,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 problems.add(d.getName() + ": " + error);
             }
         }
-        int storedWidth = 0, storedHeight = 0;
-        JpegDirectory jpeg = metadata.getFirstDirectoryOfType(JpegDirectory.class);
-        PngDirectory png = metadata.getFirstDirectoryOfType(PngDirectory.class);
+        int[] size = storedSize(metadata);
+        int storedWidth = size[0], storedHeight = size[1];
         ExifSubIFDDirectory exif = metadata.getFirstDirectoryOfType(ExifSubIFDDirectory.class);
-        if (jpeg != null && jpeg.getInteger(JpegDirectory.TAG_IMAGE_WIDTH) != null
-                && jpeg.getInteger(JpegDirectory.TAG_IMAGE_HEIGHT) != null) {
-            storedWidth = jpeg.getInteger(JpegDirectory.TAG_IMAGE_WIDTH);
-            storedHeight = jpeg.getInteger(JpegDirectory.TAG_IMAGE_HEIGHT);
-        } else if (png != null && png.getInteger(PngDirectory.TAG_IMAGE_WIDTH) != null
-                && png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT) != null) {
-            storedWidth = png.getInteger(PngDirectory.TAG_IMAGE_WIDTH);
-            storedHeight = png.getInteger(PngDirectory.TAG_IMAGE_HEIGHT);
-        } else {
-            // Other formats' headers (GIF, BMP, WebP): the size their pixels will have, before the EXIF sub-IFD's (a
-            // resized file often keeps the camera's there: a WebP was rendered at it); a TIFF's first image last (in a
-            // raw file that is often a small preview, the EXIF sub-IFD the sensor's image).
-            int[] size = firstSize(metadata,
-                    new Object[] {com.drew.metadata.gif.GifHeaderDirectory.class, com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_WIDTH,
-                            com.drew.metadata.gif.GifHeaderDirectory.TAG_IMAGE_HEIGHT},
-                    new Object[] {com.drew.metadata.bmp.BmpHeaderDirectory.class, com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_WIDTH,
-                            com.drew.metadata.bmp.BmpHeaderDirectory.TAG_IMAGE_HEIGHT},
-                    new Object[] {com.drew.metadata.webp.WebpDirectory.class, com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_WIDTH,
-                            com.drew.metadata.webp.WebpDirectory.TAG_IMAGE_HEIGHT},
-                    new Object[] {ExifSubIFDDirectory.class, ExifSubIFDDirectory.TAG_EXIF_IMAGE_WIDTH,
-                            ExifSubIFDDirectory.TAG_EXIF_IMAGE_HEIGHT},
-                    new Object[] {ExifIFD0Directory.class, ExifIFD0Directory.TAG_IMAGE_WIDTH, ExifIFD0Directory.TAG_IMAGE_HEIGHT});
-            storedWidth = size[0];
-            storedHeight = size[1];
-        }
         if (storedWidth < 0 || storedHeight < 0) {
             storedWidth = storedHeight = 0;
         }
