@@ -148,6 +148,8 @@ public final class PhotoCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--renderer reference: " + e.getMessage(), e);
         }
         CameraImage rendered = done.image();
+        // As the panorama's: kept in P.json, and said (a missing tile, a slope at the camera's feet).
+        rendered.metadata().warnings().forEach(w -> System.err.println("  warning: " + w));
         System.out.println(String.format(Locale.ROOT, "%d×%d view at %.5f, %.5f (eye %.1f m), %d view(s) of %d×%d;"
                         + " timings %s", rendered.widthPx(), rendered.heightPx(), rendered.metadata().latDeg(),
                 rendered.metadata().lonDeg(), rendered.metadata().eyeAltitudeMetres(), rendered.metadata().views(),

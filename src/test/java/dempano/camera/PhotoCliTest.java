@@ -211,6 +211,24 @@ class PhotoCliTest {
     }
 
     @Test
+    void theRendersWarningsAreSaidAsWellAsKeptInTheJson() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        String prefix = tmp.resolve("edge").toString();
+        // 20 km reach N45E008 and N46E007, absent: sea level, which the render warns of
+        Run r = run("photo", "--dem-dir", dem.toString(), "--out", prefix, "--range-km", "20", "--lat", "46.05",
+                "--lon", "8.05", "--altitude-m", "1500", "--heading-deg", "200", "--pitch-deg", "0", "--roll-deg", "0",
+                "--hfov-deg", "60", "--width-px", "120", "--height-px", "80");
+        assertEquals(0, r.exit(), r.err());
+        com.google.gson.JsonArray warnings = com.google.gson.JsonParser.parseString(
+                Files.readString(Path.of(prefix + ".json"))).getAsJsonObject().getAsJsonArray("warnings");
+        assertTrue(warnings.size() > 0, "no warning in P.json");
+        for (com.google.gson.JsonElement w : warnings) {
+            assertTrue(r.err().contains("warning: " + w.getAsString()), "not said: " + w.getAsString() + "\n" + r.err());
+        }
+    }
+
+    @Test
     void aFieldOfViewTooWideToRenderNamesWhereItCameFrom() throws IOException {
         // FocalLengthIn35mmFilm 1 or 2 mm (a fisheye's or a broken EXIF's) gives a view no perspective render holds:
         // the error says so and names the tag and the flags that set the field of view instead.
