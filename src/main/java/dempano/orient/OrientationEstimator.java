@@ -236,10 +236,7 @@ public final class OrientationEstimator {
                 Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg()), Double.NaN))
                 : chooseFrom(coarse(coarse, w, h, profile, priors, target.hasEdges() ? COARSE_POOL : nCand),
                 target, w, h, profile, nCand, priors);
-        List<Hypothesis> refined = new ArrayList<>();
-        for (Hypothesis c : candidates) {
-            refined.add(refine(c, target, w, h, profile, priors));
-        }
+        List<Hypothesis> refined = refineEach(candidates, target, w, h, profile, priors);
         refined.sort(Comparator.comparingDouble(Hypothesis::score));
         if (!priors.headingPinned()) {
             refined.add(0, polish(refined.get(0), target, w, h, profile, priors));
@@ -810,9 +807,11 @@ public final class OrientationEstimator {
     static Hypothesis polish(Hypothesis best, Target target, int w, int h, HorizonProfile profile,
                              OrientationPriors priors) {
         Hypothesis out = best;
+        List<Hypothesis> starts = new ArrayList<>();
         for (double d : POLISH_OFFSETS_DEG) {
-            Hypothesis r = refine(new Hypothesis(best.headingDeg() + d, best.pitchDeg(), best.rollDeg(), best.hfovDeg(),
-                    Double.NaN), target, w, h, profile, priors);
+            starts.add(new Hypothesis(best.headingDeg() + d, best.pitchDeg(), best.rollDeg(), best.hfovDeg(), Double.NaN));
+        }
+        for (Hypothesis r : refineEach(starts, target, w, h, profile, priors)) {
             if (r.score() < out.score() && headingGap(r.headingDeg(), best.headingDeg()) <= DISTINCT_HEADING_DEG) {
                 out = r;
             }
@@ -942,12 +941,17 @@ public final class OrientationEstimator {
         }
         int n = s.size();
         double cx = CameraIntrinsics.centre(w), cy = CameraIntrinsics.centre(h);
-        double[] alpha = new double[n], el = new double[n], cosA = new double[n], sinA = new double[n], r = new double[n],
-                work = new double[n], ray = new double[3];
-        boolean pitchFree = Double.isNaN(priors.pitchDeg()), rollFree = Double.isNaN(priors.rollDeg());
+        // Per field of view, each sample's ray in the level camera: its azimuth off the axis and its elevation,
+        // degrees, and the cosine and sine of that azimuth (shared by every heading).
+        double[] fovs = new double[nf], thresholdsDeg = new double[nf];
+        int[] bins = new int[nf];
+        double[][] alpha = new double[nf][n], el = new double[nf][n], cosA = new double[nf][n], sinA = new double[nf][n];
+        double[] ray = new double[3];
         for (int k = 0; k < nf; k++) {
             double fov = nf == 1 ? Math.sqrt(priors.hfovMinDeg() * priors.hfovMaxDeg())
                     : Math.min(priors.hfovMaxDeg(), priors.hfovMinDeg() * Math.pow(1 + COARSE_FOV_STEP, k));
+            fovs[k] = fov;
+            bins[k] = fovBin(fov, priors);
             double f = w / 2.0 / Math.tan(Math.toRadians(fov) / 2);
             CameraIntrinsics lens = priors.lens() == null ? null : intrinsics(w, h, fov, priors.lens());
             for (int i = 0; i < n; i++) {
@@ -960,103 +964,32 @@ public final class OrientationEstimator {
                         e = Math.atan2(-ray[1], Math.hypot(ray[0], ray[2]));
                     }
                 }
-                alpha[i] = Math.toDegrees(a);
-                el[i] = Math.toDegrees(e);
-                cosA[i] = Math.cos(a);
-                sinA[i] = Math.sin(a);
+                alpha[k][i] = Math.toDegrees(a);
+                el[k][i] = Math.toDegrees(e);
+                cosA[k][i] = Math.cos(a);
+                sinA[k][i] = Math.sin(a);
             }
-            double tDeg = Math.max(3 * Math.toDegrees(1 / f), 2 / profile.pixelsPerDegree());
-            int bin = fovBin(fov, priors);
-            double[] binScore = bestScore[bin], binFov = bestFov[bin], binA = bestA[bin], binB = bestB[bin];
-            for (int j = 0; j < nh; j++) {
-                double heading = h0 + j * COARSE_HEADING_STEP_DEG;
-                for (int i = 0; i < n; i++) {
-                    r[i] = profile.elevationDeg(heading + alpha[i]) - el[i];
-                }
-                double pitch = pitchFree ? 0 : priors.pitchDeg(), b = rollFree ? 0 : -priors.rollDeg();
-                double threshold = 3 * tDeg;
-                // A robust start: per start roll, the median offset as pitch (a third of the skyline hidden moves it
-                // little); the start with the lowest truncated score at the first threshold wins, both taken on every
-                // second sample (enough to rank the starts, at half the cost; a single start, with the roll pinned, takes
-                // every sample). One start at roll 0 missed rolled photos with occluders: their edges lay beyond that
-                // threshold, and the fit below never saw them.
-                int starts = rollFree ? 2 * (int) Math.floor(priors.rollLimitDeg() / ROLL_START_STEP_DEG) + 1 : 1;
-                int stride = starts == 1 ? 1 : 2;
-                double startScore = Double.POSITIVE_INFINITY, startPitch = pitch, startB = b;
-                for (int st = 0; st < starts; st++) {
-                    double b0 = rollFree ? (st - starts / 2) * ROLL_START_STEP_DEG : b;
-                    double p0 = pitch;
-                    if (pitchFree) {
-                        int m = 0;
-                        for (int i = 0; i < n; i += stride) {
-                            double v = r[i] - b0 * sinA[i];
-                            if (!Double.isNaN(v)) {
-                                work[m++] = v;
-                            }
-                        }
-                        p0 = m == 0 ? 0 : clamp(select(work, m, m / 2), priors.pitchLimitDeg());
-                    }
-                    if (starts == 1) {
-                        startPitch = p0;
-                        break;
-                    }
-                    double sc = 0;
-                    for (int i = 0; i < n; i += stride) {
-                        double res = Math.abs(r[i] - p0 * cosA[i] - b0 * sinA[i]);
-                        sc += s.w()[i] * (res < threshold ? res / threshold : 1);
-                    }
-                    if (sc < startScore) {
-                        startScore = sc;
-                        startPitch = p0;
-                        startB = b0;
-                    }
-                }
-                pitch = startPitch;
-                b = startB;
-                for (int pass = 0; pass < 3; pass++) {
-                    double saa = 0, sab = 0, sbb = 0, sar = 0, sbr = 0;
-                    for (int i = 0; i < n; i++) {
-                        double res = r[i] - pitch * cosA[i] - b * sinA[i];
-                        if (!(Math.abs(res) < threshold)) {
-                            continue;
-                        }
-                        double wi = s.w()[i];
-                        saa += wi * cosA[i] * cosA[i];
-                        sab += wi * cosA[i] * sinA[i];
-                        sbb += wi * sinA[i] * sinA[i];
-                        sar += wi * cosA[i] * r[i];
-                        sbr += wi * sinA[i] * r[i];
-                    }
-                    if (pitchFree && rollFree) {
-                        double det = saa * sbb - sab * sab;
-                        if (det > 1e-12) {
-                            pitch = (sar * sbb - sbr * sab) / det;
-                            b = (saa * sbr - sab * sar) / det;
-                        }
-                    } else if (pitchFree && saa > 0) {
-                        pitch = (sar - b * sab) / saa;
-                    } else if (rollFree && sbb > 0) {
-                        b = (sbr - pitch * sab) / sbb;
-                    }
-                    pitch = pitchFree ? clamp(pitch, priors.pitchLimitDeg()) : pitch;
-                    b = rollFree ? clamp(b, priors.rollLimitDeg()) : b;
-                    threshold = pass == 0 ? 2 * tDeg : tDeg;
-                }
-                double sum = 0, sw = 0;
-                for (int i = 0; i < n; i++) {
-                    double res = Math.abs(r[i] - pitch * cosA[i] - b * sinA[i]);
-                    sum += s.w()[i] * (res < tDeg ? res / tDeg : 1);
-                    sw += s.w()[i];
-                }
-                double score = sum / sw;
-                if (score < binScore[j]) {
-                    binScore[j] = score;
-                    binFov[j] = fov;
-                    binA[j] = pitch;
-                    binB[j] = b;
-                }
-            }
+            thresholdsDeg[k] = Math.max(3 * Math.toDegrees(1 / f), 2 / profile.pixelsPerDegree());
         }
+        CoarsePoses poses = new CoarsePoses(s, profile, priors, alpha, el, cosA, sinA, thresholdsDeg);
+        // Headings spread over the cores, each worker taking the next heading not yet taken; a heading's fields of view
+        // in order, so each bin keeps the same pose as one thread would (the first of equal scores).
+        dempano.util.Parallel.forEachWorker(nh, nextHeading -> {
+            double[] r = new double[n], work = new double[n], pose = new double[3];
+            for (int j = nextHeading.getAsInt(); j < nh; j = nextHeading.getAsInt()) {
+                double heading = h0 + j * COARSE_HEADING_STEP_DEG;
+                for (int k = 0; k < nf; k++) {
+                    int bin = bins[k];
+                    poses.fit(heading, k, r, work, pose);
+                    if (pose[0] < bestScore[bin][j]) {
+                        bestScore[bin][j] = pose[0];
+                        bestFov[bin][j] = fovs[k];
+                        bestA[bin][j] = pose[1];
+                        bestB[bin][j] = pose[2];
+                    }
+                }
+            }
+        });
         // Over all FOVs (the best bin per heading): its local minima over heading, best first, at least
         // DISTINCT_HEADING_DEG apart.
         double[] allScore = new double[nh];
@@ -1092,6 +1025,129 @@ public final class OrientationEstimator {
         return new CoarsePool(global, out);
     }
 
+    /**
+     * The coarse search's fit of pitch and roll at one heading and field of view, on tables of the samples' rays per
+     * field of view (read only: one instance serves every worker).
+     */
+    private static final class CoarsePoses {
+        final Samples s;
+        final HorizonProfile profile;
+        final OrientationPriors priors;
+        /** Per field of view (index k), per sample: azimuth off the axis and elevation, degrees; cos and sin of it. */
+        final double[][] alphaDeg, elDeg, cosAlpha, sinAlpha;
+        /** Per field of view, the residual that counts as a full miss in the score, degrees. */
+        final double[] thresholdsDeg;
+        final boolean pitchFree, rollFree;
+
+        CoarsePoses(Samples s, HorizonProfile profile, OrientationPriors priors, double[][] alphaDeg, double[][] elDeg,
+                    double[][] cosAlpha, double[][] sinAlpha, double[] thresholdsDeg) {
+            this.s = s;
+            this.profile = profile;
+            this.priors = priors;
+            this.alphaDeg = alphaDeg;
+            this.elDeg = elDeg;
+            this.cosAlpha = cosAlpha;
+            this.sinAlpha = sinAlpha;
+            this.thresholdsDeg = thresholdsDeg;
+            pitchFree = Double.isNaN(priors.pitchDeg());
+            rollFree = Double.isNaN(priors.rollDeg());
+        }
+
+        /**
+         * The level camera turned to {@code heading}, field of view k: pitch and b (roll, sign flipped) by a robust
+         * linear fit of the skyline's offsets, and the mean truncated residual; {@code r} and {@code work} are the
+         * caller's scratch (a sample count long each).
+         *
+         * @param out receives the score, pitch (degrees) and b (degrees)
+         */
+        void fit(double heading, int k, double[] r, double[] work, double[] out) {
+            int n = s.size();
+            double[] alpha = alphaDeg[k], el = elDeg[k], cosA = cosAlpha[k], sinA = sinAlpha[k];
+            double t = thresholdsDeg[k];
+            for (int i = 0; i < n; i++) {
+                r[i] = profile.elevationDeg(heading + alpha[i]) - el[i];
+            }
+            double pitch = pitchFree ? 0 : priors.pitchDeg(), b = rollFree ? 0 : -priors.rollDeg();
+            double threshold = 3 * t;
+            // A robust start: per start roll, the median offset as pitch (a third of the skyline hidden moves it
+            // little); the start with the lowest truncated score at the first threshold wins, both taken on every
+            // second sample (enough to rank the starts, at half the cost; a single start, with the roll pinned, takes
+            // every sample). One start at roll 0 missed rolled photos with occluders: their edges lay beyond that
+            // threshold, and the fit below never saw them.
+            int starts = rollFree ? 2 * (int) Math.floor(priors.rollLimitDeg() / ROLL_START_STEP_DEG) + 1 : 1;
+            int stride = starts == 1 ? 1 : 2;
+            double startScore = Double.POSITIVE_INFINITY, startPitch = pitch, startB = b;
+            for (int st = 0; st < starts; st++) {
+                double b0 = rollFree ? (st - starts / 2) * ROLL_START_STEP_DEG : b;
+                double p0 = pitch;
+                if (pitchFree) {
+                    int m = 0;
+                    for (int i = 0; i < n; i += stride) {
+                        double v = r[i] - b0 * sinA[i];
+                        if (!Double.isNaN(v)) {
+                            work[m++] = v;
+                        }
+                    }
+                    p0 = m == 0 ? 0 : clamp(select(work, m, m / 2), priors.pitchLimitDeg());
+                }
+                if (starts == 1) {
+                    startPitch = p0;
+                    break;
+                }
+                double sc = 0;
+                for (int i = 0; i < n; i += stride) {
+                    double res = Math.abs(r[i] - p0 * cosA[i] - b0 * sinA[i]);
+                    sc += s.w()[i] * (res < threshold ? res / threshold : 1);
+                }
+                if (sc < startScore) {
+                    startScore = sc;
+                    startPitch = p0;
+                    startB = b0;
+                }
+            }
+            pitch = startPitch;
+            b = startB;
+            for (int pass = 0; pass < 3; pass++) {
+                double saa = 0, sab = 0, sbb = 0, sar = 0, sbr = 0;
+                for (int i = 0; i < n; i++) {
+                    double res = r[i] - pitch * cosA[i] - b * sinA[i];
+                    if (!(Math.abs(res) < threshold)) {
+                        continue;
+                    }
+                    double wi = s.w()[i];
+                    saa += wi * cosA[i] * cosA[i];
+                    sab += wi * cosA[i] * sinA[i];
+                    sbb += wi * sinA[i] * sinA[i];
+                    sar += wi * cosA[i] * r[i];
+                    sbr += wi * sinA[i] * r[i];
+                }
+                if (pitchFree && rollFree) {
+                    double det = saa * sbb - sab * sab;
+                    if (det > 1e-12) {
+                        pitch = (sar * sbb - sbr * sab) / det;
+                        b = (saa * sbr - sab * sar) / det;
+                    }
+                } else if (pitchFree && saa > 0) {
+                    pitch = (sar - b * sab) / saa;
+                } else if (rollFree && sbb > 0) {
+                    b = (sbr - pitch * sab) / sbb;
+                }
+                pitch = pitchFree ? clamp(pitch, priors.pitchLimitDeg()) : pitch;
+                b = rollFree ? clamp(b, priors.rollLimitDeg()) : b;
+                threshold = pass == 0 ? 2 * t : t;
+            }
+            double sum = 0, sw = 0;
+            for (int i = 0; i < n; i++) {
+                double res = Math.abs(r[i] - pitch * cosA[i] - b * sinA[i]);
+                sum += s.w()[i] * (res < t ? res / t : 1);
+                sw += s.w()[i];
+            }
+            out[0] = sum / sw;
+            out[1] = pitch;
+            out[2] = b;
+        }
+    }
+
     /** Indices of the best {@code count} local minima of a score over heading, at least DISTINCT_HEADING_DEG apart. */
     private static List<Integer> headingMinima(double[] sc, boolean full, double h0, int count) {
         int nh = sc.length;
@@ -1119,6 +1175,17 @@ public final class OrientationEstimator {
     /** The coarse stage's FOV bin of a field of view: 0 from the prior's smallest, {@link #FOV_BIN_RATIO} wide. */
     static int fovBin(double hfovDeg, OrientationPriors priors) {
         return Math.max(0, (int) Math.floor(Math.log(hfovDeg / priors.hfovMinDeg()) / Math.log(FOV_BIN_RATIO) + 1e-9));
+    }
+
+    /**
+     * {@link #refine} of each start, in parallel (each worker taking the next start not yet taken), in the starts'
+     * order: a new list, the same as refining them one after the other.
+     */
+    static List<Hypothesis> refineEach(List<Hypothesis> starts, Target s, int w, int h, HorizonProfile profile,
+                                       OrientationPriors priors) {
+        Hypothesis[] out = new Hypothesis[starts.size()];
+        dempano.util.Parallel.forEachIndex(out.length, i -> out[i] = refine(starts.get(i), s, w, h, profile, priors));
+        return new ArrayList<>(java.util.Arrays.asList(out));
     }
 
     /** Levenberg–Marquardt on the truncated squared pixel residuals, over the free parameters. */

@@ -97,32 +97,39 @@ public final class SilhouetteField {
         return ((a + tx * (b - a)) * (1 - ty) + (c + tx * (d - c)) * ty) / pixelsPerDegree;
     }
 
-    /** Exact Euclidean distance transform, capped at {@link #CAP_PX}, wrapping in x. */
+    /**
+     * Exact Euclidean distance transform, capped at {@link #CAP_PX}, wrapping in x: the columns' squared distances,
+     * then the rows' (each pass spread over the cores a column or row at a time; the same values as one thread).
+     */
     static float[] transform(boolean[] edge, int w, int h) {
         double inf = 1e12;
-        double[] col = new double[h], colOut = new double[h];
         double[] sq = new double[w * h];
-        for (int c = 0; c < w; c++) {
-            for (int r = 0; r < h; r++) {
-                col[r] = edge[r * w + c] ? 0 : inf;
+        dempano.util.Parallel.forEachWorker(w, nextColumn -> {
+            double[] col = new double[h], colOut = new double[h];
+            for (int c = nextColumn.getAsInt(); c < w; c = nextColumn.getAsInt()) {
+                for (int r = 0; r < h; r++) {
+                    col[r] = edge[r * w + c] ? 0 : inf;
+                }
+                dt1d(col, h, colOut);
+                for (int r = 0; r < h; r++) {
+                    sq[r * w + c] = colOut[r];
+                }
             }
-            dt1d(col, h, colOut);
-            for (int r = 0; r < h; r++) {
-                sq[r * w + c] = colOut[r];
-            }
-        }
+        });
         int pad = (int) Math.ceil(CAP_PX) + 1, n = w + 2 * pad;
-        double[] row = new double[n], rowOut = new double[n];
         float[] out = new float[w * h];
-        for (int r = 0; r < h; r++) {
-            for (int k = 0; k < n; k++) {
-                row[k] = sq[r * w + Math.floorMod(k - pad, w)];
+        dempano.util.Parallel.forEachWorker(h, nextRow -> {
+            double[] row = new double[n], rowOut = new double[n];
+            for (int r = nextRow.getAsInt(); r < h; r = nextRow.getAsInt()) {
+                for (int k = 0; k < n; k++) {
+                    row[k] = sq[r * w + Math.floorMod(k - pad, w)];
+                }
+                dt1d(row, n, rowOut);
+                for (int c = 0; c < w; c++) {
+                    out[r * w + c] = (float) Math.min(CAP_PX, Math.sqrt(rowOut[c + pad]));
+                }
             }
-            dt1d(row, n, rowOut);
-            for (int c = 0; c < w; c++) {
-                out[r * w + c] = (float) Math.min(CAP_PX, Math.sqrt(rowOut[c + pad]));
-            }
-        }
+        });
         return out;
     }
 
