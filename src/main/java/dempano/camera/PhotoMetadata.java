@@ -182,6 +182,11 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             throw new PhotoMetadataException(name + ": not a photograph whose metadata can be read ("
                     + plain(e.getMessage()) + ")", e);
         } catch (IOException e) {
+            if (e instanceof java.io.EOFException || e instanceof com.drew.lang.BufferBoundsException
+                    || String.valueOf(e.getMessage()).startsWith("Unable to skip")) { // the reader ran past the end
+                throw new PhotoMetadataException(name + ": corrupt photograph (the file ends before its data do:"
+                        + " truncated?)", e);
+            }
             throw new PhotoMetadataException(name + ": cannot read the photograph: " + IoMessages.reason(e), e);
         } catch (RuntimeException e) {
             // metadata-extractor may fail on malformed input with unchecked exceptions.
@@ -286,7 +291,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                 lat = la;
                 lon = lo;
             }
-            alt = value(gps.getRational(GpsDirectory.TAG_ALTITUDE));
+            alt = value(gps.getRational(GpsDirectory.TAG_ALTITUDE), "GPSAltitude", problems);
             Integer altRef = gps.getInteger(GpsDirectory.TAG_ALTITUDE_REF);
             if (altRef != null && altRef == 1) {
                 alt = -alt;
@@ -298,7 +303,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
                         MAX_GPS_ALTITUDE_METRES / 1000));
                 alt = Double.NaN;
             }
-            dir = value(gps.getRational(GpsDirectory.TAG_IMG_DIRECTION));
+            dir = value(gps.getRational(GpsDirectory.TAG_IMG_DIRECTION), "GPSImgDirection", problems);
             if (!(dir >= 0 && dir <= 360) && !Double.isNaN(dir)) { // 0 ≤ d < 360 by the standard
                 problems.add("GPSImgDirection " + shortest(dir) + "° is outside 0–360°: not used");
                 dir = Double.NaN;
@@ -315,13 +320,20 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
 
         double focal = Double.NaN, focal35 = Double.NaN, sensorWidth = Double.NaN;
         if (exif != null) {
-            focal = positive(value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_LENGTH)));
+            focal = value(exif.getRational(ExifSubIFDDirectory.TAG_FOCAL_LENGTH), "FocalLength", problems);
+            if (focal <= 0) {
+                problems.add("FocalLength " + shortest(focal) + " mm is not positive: not used");
+                focal = Double.NaN;
+            }
             if (focal > MAX_FOCAL_MM) {
                 problems.add("FocalLength " + shortest(focal) + " mm is beyond any lens (" + shortest(MAX_FOCAL_MM) + " mm): not used");
                 focal = Double.NaN;
             }
             Integer f35 = exif.getInteger(ExifSubIFDDirectory.TAG_35MM_FILM_EQUIV_FOCAL_LENGTH);
             focal35 = f35 == null ? Double.NaN : positive(f35);
+            if (f35 != null && f35 <= 0) {
+                problems.add("FocalLengthIn35mmFilm " + f35 + (f35 == 0 ? " (unknown, by the standard)" : " mm") + ": not used");
+            }
             if (focal35 > MAX_FOCAL35_MM) { // 65535: "unknown" in some cameras' EXIF; a 0.03° view otherwise
                 problems.add("FocalLengthIn35mmFilm " + f35 + " mm is beyond any lens (" + (int) MAX_FOCAL35_MM + " mm): not used");
                 focal35 = Double.NaN;
@@ -404,6 +416,14 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         }
         double v = r.doubleValue();
         return Double.isFinite(v) ? v : Double.NaN;
+    }
+
+    /** A rational tag's value; NaN where absent, and where its denominator is 0 also a problem naming the tag. */
+    private static double value(Rational r, String tag, List<String> problems) {
+        if (r != null && r.getDenominator() == 0) {
+            problems.add(tag + " " + r.getNumerator() + "/0 has a zero denominator: not used");
+        }
+        return value(r);
     }
 
     private static double positive(double v) {

@@ -148,6 +148,32 @@ public record PhotoOverrides(Placement placement, Attitude attitude, Optics opti
         return optics.calibration();
     }
 
+    /**
+     * The lens values given, each naming its own: a field of view ({@value #HFOV}), a 35 mm equivalent
+     * ({@value #FOCAL35}), a focal length and sensor ({@value #FOCAL}/{@value #SENSOR_WIDTH}, either or both) and a
+     * calibration. More than one of them would leave all but one unused (the first in that order wins); {@code names}
+     * say what each is called where they were given (flags or columns), in that order.
+     *
+     * @return the names of the lens values given, when more than one is; empty otherwise
+     */
+    public java.util.List<String> conflictingLenses(String hfovName, String focal35Name, String focalName,
+                                                    String calibrationName) {
+        java.util.List<String> given = new java.util.ArrayList<>();
+        if (!Double.isNaN(horizontalFovDeg())) {
+            given.add(hfovName);
+        }
+        if (!Double.isNaN(focal35mmMm())) {
+            given.add(focal35Name);
+        }
+        if (!Double.isNaN(focalLengthMm()) || !Double.isNaN(sensorWidthMm())) {
+            given.add(focalName);
+        }
+        if (calibration() != null) {
+            given.add(calibrationName);
+        }
+        return given.size() > 1 ? given : java.util.List.of();
+    }
+
     // Single values.
 
     public PhotoOverrides withPosition(double lat, double lon) {

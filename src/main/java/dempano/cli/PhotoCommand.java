@@ -181,6 +181,10 @@ public final class PhotoCommand implements Callable<Integer> {
             finite("--distortion", distortion[i]);
         }
         PhotoOverrides o = PhotoOverrides.NONE;
+        if ((latDeg == null) != (lonDeg == null)) { // (it was taken for no position at all)
+            throw new IllegalArgumentException(latDeg == null ? PhotoOverrides.LON + " given without " + PhotoOverrides.LAT
+                    : PhotoOverrides.LAT + " given without " + PhotoOverrides.LON);
+        }
         if (latDeg != null || lonDeg != null) {
             o = o.withPosition(latDeg == null ? Double.NaN : finite(PhotoOverrides.LAT, latDeg),
                     lonDeg == null ? Double.NaN : finite(PhotoOverrides.LON, lonDeg));
@@ -200,6 +204,11 @@ public final class PhotoCommand implements Callable<Integer> {
         o = sensorWidthMm == null ? o : o.withSensorWidthMm(finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm));
         o = focal35Mm == null ? o : o.withFocal35mmMm(finite(PhotoOverrides.FOCAL35, focal35Mm));
         o = hfovDeg == null ? o : o.withHorizontalFovDeg(finite(PhotoOverrides.HFOV, hfovDeg));
+        List<String> lenses = o.conflictingLenses(PhotoOverrides.HFOV, PhotoOverrides.FOCAL35,
+                PhotoOverrides.FOCAL + "/" + PhotoOverrides.SENSOR_WIDTH, "a calibration");
+        if (!lenses.isEmpty()) { // all but the first were left unused without a word
+            throw new IllegalArgumentException(String.join(" and ", lenses) + " each set the field of view: give one");
+        }
         if (distortion != null) {
             if (distortion.length != 5) {
                 throw new IllegalArgumentException("--distortion needs five numbers K1,K2,P1,P2,K3, got " + distortion.length);

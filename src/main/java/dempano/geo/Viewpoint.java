@@ -29,7 +29,7 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
         }
         // An eye inside the terrain would see the landscape through the back of the surface: refuse.
         if (standingAltitudeMetres + eyeHeightMetres < groundElevationMetres - BELOW_GROUND_TOLERANCE_METRES) {
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
+            throw new EyeBelowGroundException(String.format(Locale.ROOT,
                     "the eye (%.1f m) would be %.1f m below the DEM surface (%.1f m) at %.6f, %.6f: raise the offset"
                             + " or the altitude", standingAltitudeMetres + eyeHeightMetres,
                     groundElevationMetres - standingAltitudeMetres - eyeHeightMetres, groundElevationMetres, latDeg, lonDeg));

@@ -266,11 +266,12 @@ public record PhotoOrientation(boolean heading, boolean pitch, boolean roll, boo
         public String provenance(PhotoOrientation open) {
             OrientationEstimate e = estimate;
             return String.format(Locale.ROOT, "%s estimated from the skyline: %s (matched in %d × %d px; confidence:"
-                    + " residual in photo pixels; margin = score of the best other heading minus the best score, below"
-                    + " %.2f or fewer than %.0f %% of samples fitting is flagged UNSURE)", String.join(", ", open.names())
+                    + " residual in photo pixels; margin = score of the best other heading minus the best score;"
+                    + " UNSURE when the margin is below %.2f or below %.1f × the best score, fewer than %.0f %% of the"
+                    + " samples fit, or a free field of view ends on its search bound)", String.join(", ", open.names())
                             + (Double.isFinite(e.altitudeOffsetMetres()) ? ", eye altitude" : ""),
                     e.summary(), matchedWidthPx, matchedHeightPx, OrientationEstimator.UNSURE_MARGIN,
-                    100 * OrientationEstimator.UNSURE_INLIER_SHARE);
+                    OrientationEstimator.UNSURE_MARGIN_PER_SCORE, 100 * OrientationEstimator.UNSURE_INLIER_SHARE);
         }
     }
 }

@@ -122,6 +122,13 @@ public final class PhotoJob {
         return new Job(renderer, in, log).run();
     }
 
+    /** A photo whose header declares more pixels on a side than a view can have (not a corrupt one). */
+    static final class TooLarge extends IOException {
+        TooLarge(String message) {
+            super(message);
+        }
+    }
+
     /** A photo as read: its metadata and, where this Java decodes them, its pixels as displayed (else null). */
     private record Photo(PhotoMetadata meta, BufferedImage pixels) {
     }
@@ -144,6 +151,15 @@ public final class PhotoJob {
 
         Result run() throws IOException {
             Photo photo = readPhoto();
+            // The output set is opened before anything is estimated or rendered: an unwritable destination, or one that
+            // would write over the photo, is found first, not after seconds of work.
+            try (OutputSet set = OutputSet.open(in.outPrefix())) {
+                set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
+                return run(photo, set);
+            }
+        }
+
+        private Result run(Photo photo, OutputSet set) throws IOException {
             PhotoMetadata meta = photo.meta();
             PhotoOverrides given = in.overrides();
             // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
@@ -158,6 +174,13 @@ public final class PhotoJob {
             if (open.any()) {
                 log.progress("estimating from the skyline: " + String.join(", ", open.names())
                         + (open.altitude() ? "; the eye's altitude too where the skyline constrains it" : ""));
+                // What the photo or the flags gave but could not be used (a magnetic compass without the declination,
+                // a focal length without the sensor's size) is said: the estimate replaces it.
+                for (String unused : photo.meta().missing(given)) {
+                    if (!unused.startsWith("no ")) {
+                        log.progress("estimated instead: " + unused);
+                    }
+                }
                 o = open.placeholders(meta, o);
             }
             PhotoCamera camera = resolve(meta, o);
@@ -189,17 +212,14 @@ public final class PhotoJob {
                 SummitProjector.warnings(placed, rendered.metadata()).forEach(w -> log.progress("warning: " + w));
                 sightings = SummitProjector.withDem(SummitProjector.project(rendered, placed), renderer.dem());
             }
-            try (OutputSet set = OutputSet.open(in.outPrefix())) {
-                set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
-                List<CameraWriter.ExtraFile> orientationFiles = estimated == null ? List.of() : List.of(
-                        new CameraWriter.ExtraFile("-orientation.png", pngBytes(estimated.overlay())),
-                        new CameraWriter.ExtraFile("-orientation.json",
-                                (estimated.json() + "\n").getBytes(StandardCharsets.UTF_8)));
-                List<Path> files = CameraWriter.stage(set, rendered,
-                        new CameraWriter.Extras(photo.pixels(), sightings, camera.provenance(), orientationFiles));
-                set.commit();
-                return new Result(camera, rendered, files);
-            }
+            List<CameraWriter.ExtraFile> orientationFiles = estimated == null ? List.of() : List.of(
+                    new CameraWriter.ExtraFile("-orientation.png", pngBytes(estimated.overlay())),
+                    new CameraWriter.ExtraFile("-orientation.json",
+                            (estimated.json() + "\n").getBytes(StandardCharsets.UTF_8)));
+            List<Path> files = CameraWriter.stage(set, rendered,
+                    new CameraWriter.Extras(photo.pixels(), sightings, camera.provenance(), orientationFiles));
+            set.commit();
+            return new Result(camera, rendered, files);
         }
 
         /** The photo's metadata and pixels, or a camera from the flags alone (no image). */
@@ -225,6 +245,8 @@ public final class PhotoJob {
             BufferedImage stored;
             try {
                 stored = readPixels(in.image());
+            } catch (TooLarge e) { // a sound photo, only too large
+                throw new IllegalArgumentException(in.image() + ": " + e.getMessage(), e);
             } catch (IOException | RuntimeException e) {
                 throw new IllegalArgumentException(in.image() + ": corrupt photograph, its pixels cannot be decoded ("
                         + e.getMessage() + ")", e);
@@ -271,6 +293,8 @@ public final class PhotoJob {
                 throw new dempano.InsufficientMemoryException(e.estimate().matchPanoramaMessage(Runtime.getRuntime().maxMemory(),
                         String.join(", ", open.names()), String.join(", ", PhotoOverrides.HEADING, PhotoOverrides.PITCH,
                                 PhotoOverrides.ROLL, PhotoOverrides.HFOV)), e.estimate());
+            } catch (dempano.geo.EyeBelowGroundException e) {
+                throw e; // the altitude is wrong, not the values the estimate looks for
             } catch (IllegalArgumentException e) {
                 IllegalArgumentException tooWide = tooWideSaysWhy(e, camera);
                 if (tooWide != e) {
@@ -376,7 +400,7 @@ public final class PhotoJob {
                 // The size from the header, before the pixels are decoded (a small file may declare gigapixels).
                 int w = reader.getWidth(0), h = reader.getHeight(0);
                 if (w > dempano.panorama.ViewLayout.MAX_VIEW_PX || h > dempano.panorama.ViewLayout.MAX_VIEW_PX) {
-                    throw new IOException(w + "×" + h + " pixels: at most " + dempano.panorama.ViewLayout.MAX_VIEW_PX
+                    throw new TooLarge(w + "×" + h + " pixels: at most " + dempano.panorama.ViewLayout.MAX_VIEW_PX
                             + " on a side (the render of its view could not be made); scale it down");
                 }
                 reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
@@ -538,6 +562,9 @@ public final class PhotoJob {
         }
         String source = camera.provenance().stream().filter(l -> l.startsWith("focal length ")).findFirst()
                 .map(l -> l.replaceFirst(" \\(.*", "")).orElse(null);
+        if (source != null && source.contains(PhotoOverrides.HFOV)) { // the flag itself: asking for it again says nothing
+            return new IllegalArgumentException(e.getMessage() + "; the " + source + ": give a narrower " + PhotoOverrides.HFOV, e);
+        }
         return new IllegalArgumentException(e.getMessage() + (source == null ? "" : "; the " + source) + ": give "
                 + PhotoOverrides.HFOV + " (a pinhole camera's horizontal field of view) or a calibration", e);
     }

@@ -116,6 +116,10 @@ class ViewpointCsvTest {
         assertEquals("line 3: pitch_deg must be within ±90 degrees, got -91.0", angles.get(1).error());
         assertEquals("line 4: roll_deg must be within ±180 degrees, got 180.5", angles.get(2).error());
         assertTrue(angles.get(3).valid(), angles.get(3).error());
+        // Two lenses: the focal length was left unused without a word.
+        List<BatchRow> lenses = parse("id,image,hfov_deg,focal35_mm\nboth,a.jpg,50,200\none,b.jpg,50,\n").rows();
+        assertEquals("line 2: hfov_deg and focal35_mm both set the field of view: give one", lenses.get(0).error());
+        assertTrue(lenses.get(1).valid(), lenses.get(1).error());
         // A viewpoint (no image) may not fill them.
         BatchRow panorama = parse("id,lat,lon,image,hfov_min_deg,hfov_max_deg\np,46,8,,40,60\n").rows().get(0);
         assertFalse(panorama.valid());

@@ -90,6 +90,26 @@ public final class ExifJpeg {
         return this;
     }
 
+    /** GPSAltitudeRef and GPSAltitude as the rational num/den as written (den 0: a broken writer's). */
+    public ExifJpeg altitudeRational(int ref, long num, long den) {
+        gps.add(byteValue(0x0005, ref));
+        gps.add(rationals(0x0006, num, den));
+        return this;
+    }
+
+    /** GPSImgDirectionRef and GPSImgDirection as the rational num/den as written. */
+    public ExifJpeg directionRational(String ref, long num, long den) {
+        gps.add(ascii(0x0010, ref));
+        gps.add(rationals(0x0011, num, den));
+        return this;
+    }
+
+    /** FocalLength as the rational num/den as written. */
+    public ExifJpeg focalRational(long num, long den) {
+        exif.add(rationals(0x920A, num, den));
+        return this;
+    }
+
     /** GPSImgDirectionRef (null = no ref tag) and GPSImgDirection in hundredths of a degree. */
     public ExifJpeg direction(String ref, long hundredths) {
         if (ref != null) {

@@ -210,6 +210,60 @@ class PhotoCliTest {
         assertTrue(json.contains("\"k1\": -0.1") && json.contains("\"rollDeg\": 10.0"), json);
     }
 
+    /** Flags that would be left unused without a word are refused before anything is read or rendered. */
+    @Test
+    void twoLensesOrHalfAPositionAreBadArguments() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        String[] common = {"photo", "--dem-dir", dem.toString(), "--out", tmp.resolve("x").toString(), "--width-px", "64",
+            "--height-px", "48", "--heading-deg", "10", "--pitch-deg", "0", "--roll-deg", "0", "--altitude-m", "1500"};
+        String[][] cases = {
+            {"--hfov-deg and --focal35-mm each set the field of view: give one", "--lat", "46.5", "--lon", "8.5",
+                "--hfov-deg", "50", "--focal35-mm", "200"},
+            {"--hfov-deg and --focal-mm/--sensor-width-mm each set", "--lat", "46.5", "--lon", "8.5", "--hfov-deg", "50",
+                "--focal-mm", "20"},
+            {"--lat given without --lon", "--lat", "46.5", "--hfov-deg", "50"},
+            {"--lon given without --lat", "--lon", "8.5", "--hfov-deg", "50"},
+        };
+        for (String[] c : cases) {
+            String[] args = java.util.stream.Stream.concat(java.util.Arrays.stream(common),
+                    java.util.Arrays.stream(c, 1, c.length)).toArray(String[]::new);
+            Run r = run(args);
+            assertEquals(2, r.exit(), r.err());
+            assertTrue(r.err().contains(c[0]), r.err());
+        }
+    }
+
+    /**
+     * Before an estimate, what the flags or the photo gave but cannot be used is said; an eye below the ground is
+     * that error alone, not a failed estimate listing flags that would not help.
+     */
+    @Test
+    void anEstimateSaysWhatItReplacesAndAnEyeBelowGroundIsItsOwnError() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).write(tmp, "lensless.jpg", 64, 48);
+        Run focal = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("f").toString(),
+                "--range-km", "20", "--focal-mm", "50");
+        assertTrue(focal.err().contains("estimated instead: --focal-mm needs --sensor-width-mm"), focal.err());
+        Run low = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("low").toString(),
+                "--range-km", "20", "--altitude-m", "100");
+        assertEquals(2, low.exit(), low.err());
+        assertTrue(low.err().contains("below the DEM surface"), low.err());
+        assertFalse(low.err().contains("could not estimate"), low.err());
+    }
+
+    /** An unwritable destination is found before the estimate and the render, not after them. */
+    @Test
+    void aMissingOutputFolderIsFoundBeforeTheEstimate() throws IOException {
+        Path dem = Files.createDirectories(tmp.resolve("dem"));
+        tile(dem, 46, 8);
+        Path jpg = new ExifJpeg().orientation(1).position(46.5, 8.5).write(tmp, "open.jpg", 64, 48);
+        Run r = run("photo", jpg.toString(), "--dem-dir", dem.toString(), "--out", tmp.resolve("absent/p").toString());
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().contains("does not exist"), r.err());
+        assertFalse(r.err().contains("estimating from the skyline"), r.err());
+    }
+
     @Test
     void theRendersWarningsAreSaidAsWellAsKeptInTheJson() throws IOException {
         Path dem = Files.createDirectories(tmp.resolve("dem"));

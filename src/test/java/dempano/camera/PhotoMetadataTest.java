@@ -396,4 +396,28 @@ class PhotoMetadataTest {
         PhotoMetadataException e = assertThrows(PhotoMetadataException.class, () -> PhotoMetadata.read(fifo));
         assertTrue(e.getMessage().equals(fifo + ": is not a regular file (a pipe or a device), not a photograph"), e.getMessage());
     }
+
+    /** Tags present but unusable (a zero denominator, a zero focal length) are named as problems, not taken for absent. */
+    @Test
+    void unusableLensAndAltitudeTagsAreNamedNotSilentlyDropped(@TempDir Path dir) throws Exception {
+        String[][] cases = {
+            {"alt-0den", "GPSAltitude 1950/0 has a zero denominator"},
+            {"dir-0den", "GPSImgDirection 3000/0 has a zero denominator"},
+            {"focal-0den", "FocalLength 50/0 has a zero denominator"},
+            {"focal-0", "FocalLength 0 mm is not positive"},
+            {"focal35-0", "FocalLengthIn35mmFilm 0 (unknown, by the standard)"},
+        };
+        for (String[] c : cases) {
+            ExifJpeg j = new ExifJpeg().position(46.5, 8.5);
+            j = switch (c[0]) {
+                case "alt-0den" -> j.altitudeRational(0, 1950, 0);
+                case "dir-0den" -> j.directionRational("T", 3000, 0);
+                case "focal-0den" -> j.focalRational(50, 0);
+                case "focal-0" -> j.focalRational(0, 1);
+                default -> j.focal35(0);
+            };
+            PhotoMetadata m = PhotoMetadata.read(j.write(dir, c[0] + ".jpg", 40, 30));
+            assertTrue(m.problems().stream().anyMatch(l -> l.contains(c[1])), c[0] + ": " + m.problems());
+        }
+    }
 }
