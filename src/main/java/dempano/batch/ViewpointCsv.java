@@ -373,9 +373,8 @@ public final class ViewpointCsv {
                 o = c.override().apply(o, v);
             }
         }
-        List<String> lenses = o.conflictingLenses(HFOV_DEG, FOCAL35_MM, "", "");
-        if (!lenses.isEmpty()) { // the focal length was left unused without a word
-            throw new IllegalArgumentException(String.join(" and ", lenses) + " both set the field of view: give one");
+        if (o.lensesGiven().size() > 1) { // (a row's only lens columns) the focal length was left unused without a word
+            throw new IllegalArgumentException(HFOV_DEG + " and " + FOCAL35_MM + " both set the field of view: give one");
         }
         double headingRange = number(f, columns, HEADING_RANGE_DEG, "heading range", Double.NaN),
                 hfovMin = number(f, columns, HFOV_MIN_DEG, "smallest field of view", Double.NaN),

@@ -148,30 +148,29 @@ public record PhotoOverrides(Placement placement, Attitude attitude, Optics opti
         return optics.calibration();
     }
 
+    /** The ways of giving the lens, in the order of precedence {@link PhotoMetadata#resolve} takes them. */
+    public enum Lens { FIELD_OF_VIEW, FOCAL35, FOCAL_LENGTH_AND_SENSOR, CALIBRATION }
+
     /**
-     * The lens values given, each naming its own: a field of view ({@value #HFOV}), a 35 mm equivalent
-     * ({@value #FOCAL35}), a focal length and sensor ({@value #FOCAL}/{@value #SENSOR_WIDTH}, either or both) and a
-     * calibration. More than one of them would leave all but one unused (the first in that order wins); {@code names}
-     * say what each is called where they were given (flags or columns), in that order.
-     *
-     * @return the names of the lens values given, when more than one is; empty otherwise
+     * The lens values given ({@link #HFOV}, {@link #FOCAL35}, {@link #FOCAL}/{@link #SENSOR_WIDTH} either or both, a
+     * calibration), in order of precedence. More than one leaves all but the first unused: callers refuse that,
+     * naming the values as the user gave them (flags, or batch columns).
      */
-    public java.util.List<String> conflictingLenses(String hfovName, String focal35Name, String focalName,
-                                                    String calibrationName) {
-        java.util.List<String> given = new java.util.ArrayList<>();
+    public java.util.List<Lens> lensesGiven() {
+        java.util.List<Lens> given = new java.util.ArrayList<>();
         if (!Double.isNaN(horizontalFovDeg())) {
-            given.add(hfovName);
+            given.add(Lens.FIELD_OF_VIEW);
         }
         if (!Double.isNaN(focal35mmMm())) {
-            given.add(focal35Name);
+            given.add(Lens.FOCAL35);
         }
         if (!Double.isNaN(focalLengthMm()) || !Double.isNaN(sensorWidthMm())) {
-            given.add(focalName);
+            given.add(Lens.FOCAL_LENGTH_AND_SENSOR);
         }
         if (calibration() != null) {
-            given.add(calibrationName);
+            given.add(Lens.CALIBRATION);
         }
-        return given.size() > 1 ? given : java.util.List.of();
+        return given;
     }
 
     // Single values.

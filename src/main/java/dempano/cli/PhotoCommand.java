@@ -204,10 +204,14 @@ public final class PhotoCommand implements Callable<Integer> {
         o = sensorWidthMm == null ? o : o.withSensorWidthMm(finite(PhotoOverrides.SENSOR_WIDTH, sensorWidthMm));
         o = focal35Mm == null ? o : o.withFocal35mmMm(finite(PhotoOverrides.FOCAL35, focal35Mm));
         o = hfovDeg == null ? o : o.withHorizontalFovDeg(finite(PhotoOverrides.HFOV, hfovDeg));
-        List<String> lenses = o.conflictingLenses(PhotoOverrides.HFOV, PhotoOverrides.FOCAL35,
-                PhotoOverrides.FOCAL + "/" + PhotoOverrides.SENSOR_WIDTH, "a calibration");
-        if (!lenses.isEmpty()) { // all but the first were left unused without a word
-            throw new IllegalArgumentException(String.join(" and ", lenses) + " each set the field of view: give one");
+        List<PhotoOverrides.Lens> lenses = o.lensesGiven();
+        if (lenses.size() > 1) { // all but the first were left unused without a word
+            throw new IllegalArgumentException(lenses.stream().map(l -> switch (l) {
+                case FIELD_OF_VIEW -> PhotoOverrides.HFOV;
+                case FOCAL35 -> PhotoOverrides.FOCAL35;
+                case FOCAL_LENGTH_AND_SENSOR -> PhotoOverrides.FOCAL + "/" + PhotoOverrides.SENSOR_WIDTH;
+                case CALIBRATION -> "a calibration";
+            }).collect(java.util.stream.Collectors.joining(" and ")) + " each set the field of view: give one");
         }
         if (distortion != null) {
             if (distortion.length != 5) {

@@ -155,11 +155,12 @@ public final class PhotoJob {
             // would write over the photo, is found first, not after seconds of work.
             try (OutputSet set = OutputSet.open(in.outPrefix())) {
                 set.protect(in.image(), "the photo").protect(sourceFile(in.summits()), "the summit list");
-                return run(photo, set);
+                return estimateRenderAndStage(photo, set);
             }
         }
 
-        private Result run(Photo photo, OutputSet set) throws IOException {
+        /** The steps after the photo is read, the files staged in {@code set} and committed. */
+        private Result estimateRenderAndStage(Photo photo, OutputSet set) throws IOException {
             PhotoMetadata meta = photo.meta();
             PhotoOverrides given = in.overrides();
             // Heading, pitch, roll and field of view that neither overrides nor metadata give are estimated from the skyline.
