@@ -226,17 +226,25 @@ public final class Stitcher {
         java.util.concurrent.atomic.LongAdder probed = new java.util.concurrent.atomic.LongAdder();
         java.util.concurrent.atomic.LongAdder fallback = new java.util.concurrent.atomic.LongAdder();
         int height = target.heightPx();
-        // Each worker takes the next row not yet taken until none is left. The probed pixels crowd into a few rows
-        // around the horizon, so any fixed split of the rows leaves one core with most of the work at some
-        // viewpoints (interleaved stripes split four ways by the stream: 1.57 cores busy at Mount Washington's
-        // summit); taken a row at a time, the cores finish within a row of each other. The output does not depend
-        // on which worker takes which row.
+        // Each worker takes the next chunk of CHUNK_COLUMNS columns not yet taken until none is left, and walks it a
+        // row at a time from the bottom up: in a panorama a pixel's hit then bounds the search of the pixel above
+        // (RowStitcher.belowBoundMetres). The probed pixels crowd into some azimuths (and into a few rows), so any
+        // fixed split leaves one core with most of the work at some viewpoints (interleaved row stripes split four
+        // ways by the stream: 1.57 cores busy at Mount Washington's summit); taken a chunk at a time, the cores finish
+        // within a chunk of each other. A pixel reads only its own chunk's pixels below it, so the output does not
+        // depend on which worker takes which chunk.
         Rows shared = new Rows(target.widthPx(), layout, captures, inverseEyeDepth, seen, exact == null ? null : exact.probe(),
-                sampling, topTerrainRow, argbOut, rangeOut);
-        dempano.util.Parallel.forEachWorker(height, nextRow -> {
-            RowStitcher rows = new RowStitcher(shared);
-            for (int row = nextRow.getAsInt(); row < height; row = nextRow.getAsInt()) {
-                rows.stitch(row);
+                sampling, topTerrainRow, argbOut, rangeOut, passColumns(target.widthPx(), captures, sampling));
+        boolean verticalColumns = target instanceof PanoramaTarget;
+        int columnCount = shared.columns() == null ? target.widthPx() : shared.columns().length;
+        int chunks = (columnCount + CHUNK_COLUMNS - 1) / CHUNK_COLUMNS;
+        dempano.util.Parallel.forEachWorker(chunks, nextChunk -> {
+            RowStitcher rows = new RowStitcher(shared, verticalColumns);
+            for (int chunk = nextChunk.getAsInt(); chunk < chunks; chunk = nextChunk.getAsInt()) {
+                int k0 = chunk * CHUNK_COLUMNS, k1 = Math.min(columnCount, k0 + CHUNK_COLUMNS);
+                for (int row = height - 1; row >= 0; row--) {
+                    rows.stitch(row, k0, k1);
+                }
             }
             exactCount.add(rows.exactPixels);
             probed.add(rows.probedPixels);
@@ -258,8 +266,20 @@ public final class Stitcher {
      */
     private record Rows(int width, ViewLayout layout, ViewCapture[] captures, InverseDepths inverseEyeDepth,
                         SeenTriangles seen, RayProbe probe, ViewSampling sampling, int[][] topTerrainRow, int[] argbOut,
-                        float[] rangeOut) {
+                        float[] rangeOut, int[] columns) {
     }
+
+    /** Where some views are left to other passes (null captures): the columns that may sample this pass's views; else null. */
+    private static int[] passColumns(int width, ViewCapture[] captures, ViewSampling sampling) {
+        return java.util.Arrays.asList(captures).contains(null)
+                ? IntStream.range(0, width).filter(col -> {
+                    int view = sampling.columnView(col);
+                    return view < 0 || captures[view] != null;
+                }).toArray() : null;
+    }
+
+    /** Columns a worker takes at a time, each from the bottom row up. */
+    static final int CHUNK_COLUMNS = 32;
 
     private static final class RowStitcher {
         final int width;
@@ -283,7 +303,16 @@ public final class Stitcher {
         long exactPixels, probedPixels, fallbackPixels;
 
         // The shared inputs copied into final fields of the worker's own object: read per pixel, kept close.
-        RowStitcher(Rows r) {
+        /** Whether each column's pixels share one azimuth (a panorama): a pixel's hit then bounds the one above's. */
+        final boolean verticalColumns;
+        /**
+         * Per column of the chunk: horizontal metres to the pixel below's hit, where that is a distance on the surface
+         * (exact or probed), else 0.
+         */
+        final double[] belowHorizontalMetres = new double[CHUNK_COLUMNS];
+
+        RowStitcher(Rows r, boolean verticalColumns) {
+            this.verticalColumns = verticalColumns;
             this.width = r.width();
             this.layout = r.layout();
             this.captures = r.captures();
@@ -294,20 +323,19 @@ public final class Stitcher {
             this.topTerrainRow = r.topTerrainRow();
             this.argbOut = r.argbOut();
             this.rangeOut = r.rangeOut();
-            this.columns = java.util.Arrays.asList(captures).contains(null)
-                    ? IntStream.range(0, width).filter(col -> {
-                        int view = sampling.columnView(col);
-                        return view < 0 || captures[view] != null;
-                    }).toArray() : null;
+            this.columns = r.columns();
         }
 
-        void stitch(int row) {
-            double[] p = this.p, ray = this.ray;
+        /** Row {@code row}'s pixels in columns k0 ≤ k < k1 (indices into {@link #columns} where a pass has them). */
+        void stitch(int row, int k0, int k1) {
+            double[] p = this.p, ray = this.ray, below = this.belowHorizontalMetres;
             int[] columns = this.columns;
-            for (int k = 0, count = columns == null ? width : columns.length; k < count; k++) {
+            for (int k = k0; k < k1; k++) {
                 int col = columns == null ? k : columns[k];
                 int view = sampling.locate(col, row, p, ray);
                 int i = row * width + col;
+                double belowHorizontal = below[k - k0];
+                below[k - k0] = 0;
                 if (view >= 0 && captures[view] == null) {
                     continue; // a view of another pass (see stitch)
                 }
@@ -346,11 +374,12 @@ public final class Stitcher {
                             // (A crossing nearer than where the search starts means the ray was not above the surface
                             // there, a few per cent nearer than the terrain seen: the probe's surface and the drawn one
                             // part near a slope at the eye's feet; the triangles met decide then.)
-                            double from = NEAREST_SEEN_SHARE * nearestSeen;
-                            double nearer = probe.firstHitMetres(ray[0], ray[1], ray[2], from, r);
+                            double from = Math.max(NEAREST_SEEN_SHARE * nearestSeen, belowBoundMetres(belowHorizontal));
+                            double nearer = from < r ? probe.firstHitMetres(ray[0], ray[1], ray[2], from, r) : Double.NaN;
                             if (nearer >= from && nearer < r) {
                                 probedPixels++;
                                 rangeOut[i] = (float) nearer;
+                                below[k - k0] = horizontalMetres(nearer);
                                 continue;
                             }
                         }
@@ -363,7 +392,29 @@ public final class Stitcher {
                     }
                 }
                 rangeOut[i] = (float) (Double.isNaN(r) ? range(inverseEyeDepth.of(view), layout, p, scratch) : r);
+                if (r < Double.POSITIVE_INFINITY) { // (not NaN: the views' interpolation bounds nothing)
+                    below[k - k0] = horizontalMetres(r);
+                }
             }
+        }
+
+        /** Horizontal metres to a hit {@code metres} along the current pixel's ray (0 where the column is not vertical). */
+        private double horizontalMetres(double metres) {
+            return verticalColumns ? metres * Math.hypot(ray[0], ray[2]) : 0;
+        }
+
+        /**
+         * Nearer than this (metres along the current pixel's ray) its ray meets no terrain, from the hit of the pixel below
+         * it ({@code belowHorizontal} metres away horizontally; 0: none known): its ray lies above the lower one in the
+         * same vertical plane, and the lower one passed above every surface point up to that hit (the surface is a
+         * height field), so this ray reaches none of them before the vertical there, at belowHorizontal / cos(elevation).
+         * The margin ({@link #NEAREST_SEEN_SHARE}) covers what that flat reckoning leaves out (the vertical there is
+         * tilted from the eye's by the Earth's curve, which moves the crossing by the rows' angle times that tilt:
+         * under 1e-4) and a simplified patch's sag, should the hit below be on one (the level of detail's 0.2 %).
+         */
+        private double belowBoundMetres(double belowHorizontal) {
+            double horizontalShare = Math.hypot(ray[0], ray[2]);
+            return horizontalShare > 0.1 ? NEAREST_SEEN_SHARE * belowHorizontal / horizontalShare : 0;
         }
 
         /**

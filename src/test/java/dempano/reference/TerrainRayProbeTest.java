@@ -263,6 +263,30 @@ class TerrainRayProbeTest {
     }
 
     /**
+     * A ray that grazes a crest on a cell edge finds it wherever its search starts. Mount Washington's panorama
+     * (20 px/°, refraction 0.13, 100 km) has a pixel, azimuth 54.125°, elevation −2.775°, whose ray meets a ridge
+     * 29.8 km off just under its crest: searched from 28.7 km it was met, from 28.68 km the search crossed that
+     * edge where the path extrapolated from an anchor 2 km back put it (a metre or two off) and went on to 41.9 km.
+     * The truth is the walk over every cell along the last 2 km ({@link TerrainRayProbe#nearestHitBetweenMetres}),
+     * which needs no anchor.
+     */
+    @Test
+    void aRayGrazingACrestOnAnEdgeMeetsItWhereverTheSearchStarts() throws Exception {
+        dempano.dem.DemDirectory dem = new dempano.dem.DemDirectory(dempano.SharedData.demDir());
+        double range = 100_000;
+        Mosaic mosaic = Mosaic.of(dem, TileSelection.around(44.2706, -71.3033, range), MissingTilePolicy.AUTO);
+        Viewpoint eye = Viewpoint.onDem(mosaic, 44.2706, -71.3033, 2, 0);
+        TerrainRayProbe probe = new TerrainRayProbe(mosaic, eye, Refraction.STANDARD, range);
+        double az = Math.toRadians(54.125), el = Math.toRadians(-2.775);
+        double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
+        double truth = probe.nearestHitBetweenMetres(e, u, -n, 28_600, 30_500);
+        assertEquals(29_838, truth, 1, "the walk meets the ridge");
+        for (double from : new double[] {5_000, 20_000, 25_000, 28_000, 28_600, 28_675.852880706883, 28_700, 29_700}) {
+            assertEquals(truth, probe.firstHitMetres(e, u, -n, from, 45_000), 1e-6 * truth, "searched from " + from + " m");
+        }
+    }
+
+    /**
      * Whether two crossings differ: more than a cell (1/600°, 128 m east–west here) apart along the
      * ray. The march steps on the heights interpolated in latitude and longitude, the probe ends on
      * the planar triangles the renderers draw; the two surfaces are millimetres to centimetres apart,
