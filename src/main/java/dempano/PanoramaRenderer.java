@@ -310,6 +310,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             clock.lap("layers");
         }
         List<String> warnings = new ArrayList<>(scene.mosaic().warnings());
+        scene.eye().filledVoidWarning(scene.mosaic()).ifPresent(warnings::add);
         warnings.addAll(renderWarnings);
         if (req.distance()) {
             NearTerrain.measure(view, images.distance(), NearTerrain.DEFAULT_NEAR_METRES).cameraWarning().ifPresent(warnings::add);
@@ -721,6 +722,7 @@ public final class PanoramaRenderer implements AutoCloseable {
             clock.lap("layers");
         }
         List<String> warnings = new ArrayList<>(mosaic.warnings());
+        eye.filledVoidWarning(mosaic).ifPresent(warnings::add);
         if (req.distance()) {
             // A wall beside the eye (a viewpoint next to the DEM's own summit): say so, with the options that fix it.
             NearTerrain.measure(geometry, distance, NearTerrain.DEFAULT_NEAR_METRES).warning().ifPresent(warnings::add);

@@ -251,6 +251,7 @@ public final class GeoTiffReader {
             throw new DemException(source + " is a BigTIFF, which dempano cannot read; rewrite it as a classic TIFF, "
                     + "e.g. gdal_translate -co BIGTIFF=NO (one-degree tiles are far below 4 GB)");
         }
+        checkDirectoryChain(source, bytes);
         FileDirectory dir;
         try {
             TIFFImage image = TiffReader.readTiff(bytes);
@@ -305,7 +306,17 @@ public final class GeoTiffReader {
         }
         boolean point = keys.get(GT_RASTER_TYPE) instanceof Integer t && t == RASTER_PIXEL_IS_POINT;
 
-        int width = dir.getImageWidth().intValue(), height = dir.getImageHeight().intValue();
+        long declaredWidth = dir.getImageWidth().longValue(), declaredHeight = dir.getImageHeight().longValue();
+        if (declaredWidth <= 0 || declaredHeight <= 0) {
+            throw new DemException(source + " declares an image of " + declaredWidth + " × " + declaredHeight + " pixels (corrupt file?)");
+        }
+        if (declaredWidth * declaredHeight > MAX_PIXELS) {
+            throw new DemException(String.format(Locale.ROOT, "%s declares %d × %d pixels, more than dempano reads from one file "
+                    + "(%.0f M; a one-degree tile at 1/3″ is 10 812 × 10 812 = 117 M, and tiles are resampled to at most 3600 "
+                    + "intervals a degree): cut it into one-degree tiles, or coarsen it (gdal_translate -tr)",
+                    source, declaredWidth, declaredHeight, MAX_PIXELS / 1e6));
+        }
+        int width = (int) declaredWidth, height = (int) declaredHeight;
         double[] geo = georeferencing(source, dir); // X, Y of raster position (I, J), Sx, Sy
         double shift = point ? 0 : 0.5; // raster coordinates of pixel (0, 0)'s centre
         double lon0 = geo[0] + (shift - geo[4]) * geo[2];
@@ -316,7 +327,15 @@ public final class GeoTiffReader {
         if (part == Part.FIRST_ROW || part == Part.FIRST_PIXEL) {
             height = 1;
         }
-        float[] heights = heights(source, dir, bytes, width, height);
+        float[] heights;
+        try {
+            heights = heights(source, dir, bytes, width, height);
+        } catch (OutOfMemoryError e) {
+            throw new DemException(String.format(Locale.ROOT, "%s: too little memory to read its %d × %d pixels (Java heap "
+                    + "limit %.0f MB): give Java more memory, e.g. DEMPANO_OPTS=-Xmx%dg, or cut the file into smaller tiles",
+                    source, width, height, Runtime.getRuntime().maxMemory() / 1e6,
+                    Math.max(2, 2 * (int) Math.ceil(Runtime.getRuntime().maxMemory() / 1e9))), e);
+        }
         return new Grid(source, width, height, heights, new PixelCentres(lon0, lat0, geo[2], geo[3], point),
                 verticalDatum(keys, fileName), geographic);
     }
@@ -340,6 +359,47 @@ public final class GeoTiffReader {
             }
         }
         return null;
+    }
+
+    /**
+     * Most pixels read from one file: 2^28 (268 M, 1 GB of heights as floats), 16 384² — over twice a one-degree tile at
+     * 1/3″ (10 812², USGS 3DEP); tiles are resampled to at most {@link #MAX_INTERVALS_PER_DEGREE} intervals a degree anyway.
+     * A file declaring more is refused before anything is allocated (a 282-byte file declaring 46 341² pixels
+     * overflowed the heights' array size, one declaring 30 000² took 3.7 GB before it was refused).
+     */
+    static final long MAX_PIXELS = 1L << 28;
+
+    /** Most image directories in one file: a Cloud-Optimized GeoTIFF has its image, a dozen overviews and their masks. */
+    static final int MAX_DIRECTORIES = 1000;
+
+    /**
+     * Refuses a file whose chain of image directories loops back or runs on without end (the TIFF library follows it
+     * for ever, holding every directory: a 282-byte file whose first directory named itself as the next grew to 18 GB).
+     * Only the chain is walked (each directory's entry count and next offset); anything else wrong is the library's to
+     * find.
+     */
+    static void checkDirectoryChain(String source, byte[] b) {
+        if (b.length < 8 || !(b[0] == 'I' && b[1] == 'I' || b[0] == 'M' && b[1] == 'M')) {
+            return; // not a TIFF header: the library says so
+        }
+        ByteBuffer buf = ByteBuffer.wrap(b).order(b[0] == 'I' ? java.nio.ByteOrder.LITTLE_ENDIAN : java.nio.ByteOrder.BIG_ENDIAN);
+        java.util.Set<Long> seen = new java.util.HashSet<>();
+        long offset = buf.getInt(4) & 0xffffffffL;
+        while (offset != 0 && offset + 2 <= b.length) {
+            if (!seen.add(offset)) {
+                throw new DemException(source + " is a corrupt TIFF file: its chain of image directories loops back to the one at byte "
+                        + offset);
+            }
+            if (seen.size() > MAX_DIRECTORIES) {
+                throw new DemException(source + " is a corrupt TIFF file: its chain of image directories runs past "
+                        + MAX_DIRECTORIES + " directories");
+            }
+            long next = offset + 2 + 12L * (buf.getShort((int) offset) & 0xffff);
+            if (next + 4 > b.length) {
+                return; // cut short: the library says so
+            }
+            offset = buf.getInt((int) next) & 0xffffffffL;
+        }
     }
 
     /** The first image that is not a reduced-resolution overview or a mask (NewSubfileType 0). */
@@ -468,6 +528,21 @@ public final class GeoTiffReader {
             throw new DemException(source + ": " + offsets.size() + " image blocks listed, " + across * down
                     + " needed (corrupt file?)");
         }
+        // Before anything is allocated: a block of n bytes decompresses to at most n × its method's greatest ratio, so
+        // a file declaring more pixels than its blocks can hold is refused here, not after gigabytes were allocated.
+        long ratio = MAX_RATIO.get(compression);
+        for (int by = 0; by * bh < height; by++) {
+            for (int bx = 0; bx * bw < width; bx++) {
+                int k = by * across + bx, rows = tiled ? bh : Math.min(bh, fullHeight - by * bh);
+                long len = counts.get(k).longValue(), needed = (long) bw * rows * bytes;
+                if (len < 0 || len * ratio < needed) {
+                    throw new DemException(source + ": image block " + k + " holds " + len + " bytes, " + needed + " expected"
+                            + (ratio > 1 ? " (no " + COMPRESSIONS.get(compression) + " data expands " + ratio + "-fold or more)" : "")
+                            + " for its " + bw + " × " + rows + " pixels (truncated or corrupt file, or not the "
+                            + fullWidth + " × " + fullHeight + " pixels it declares?)");
+                }
+            }
+        }
         double nodata = nodata(source, dir);
         float nodataFloat = (float) nodata;
         double[] scaleOffset = scaleOffset(source, dir);
@@ -484,11 +559,17 @@ public final class GeoTiffReader {
                 }
                 int rows = tiled ? bh : Math.min(bh, fullHeight - by * bh);
                 byte[] block;
+                long blockBytes = (long) bw * bh * bytes; // a whole block (a last strip may be written whole)
                 try {
-                    block = decoder.decode(java.util.Arrays.copyOfRange(file, (int) off, (int) (off + len)), order);
-                } catch (RuntimeException e) {
+                    block = compression == 8 || compression == 32946 ? inflate(file, (int) off, (int) len, blockBytes)
+                            : decoder.decode(java.util.Arrays.copyOfRange(file, (int) off, (int) (off + len)), order);
+                } catch (RuntimeException | java.util.zip.DataFormatException e) {
                     throw new DemException(source + ": cannot decompress image block " + k + " (" + reason(e)
                             + "; truncated or corrupt file?)", e);
+                }
+                if (block != null && block.length > blockBytes) {
+                    throw new DemException(source + ": image block " + k + " decompresses to more than the " + blockBytes
+                            + " bytes of its " + bw + " × " + bh + " pixels (corrupt file, or a decompression bomb)");
                 }
                 if (block == null || block.length < (long) bw * rows * bytes) {
                     throw new DemException(source + ": image block " + k + " holds " + (block == null ? 0 : block.length)
@@ -536,6 +617,37 @@ public final class GeoTiffReader {
             }
         }
         return out;
+    }
+
+    /**
+     * The greatest ratio of decompressed to compressed bytes of each supported compression: Deflate's 258-byte matches
+     * coded in 2 bits (1032), LZW's longest strings (under 4096 bytes) for a 12-bit code, PackBits' 128-byte run for 2
+     * bytes. Upper bounds, so no real file is refused.
+     */
+    private static final Map<Integer, Long> MAX_RATIO = Map.of(1, 1L, 5, 4096L, 8, 1100L, 32946, 1100L, 32773, 64L);
+
+    /**
+     * A Deflate (zlib) block, stopped as soon as it yields more than {@code capBytes} (a decompression bomb: a 1 MB
+     * file whose block inflated to 1 GB was read whole, and its surplus ignored). A stream cut short gives what it
+     * holds; the caller finds it short.
+     */
+    private static byte[] inflate(byte[] file, int off, int len, long capBytes) throws java.util.zip.DataFormatException {
+        java.util.zip.Inflater inflater = new java.util.zip.Inflater();
+        try {
+            inflater.setInput(file, off, len);
+            java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream((int) Math.min(capBytes + 1, 1 << 20));
+            byte[] chunk = new byte[1 << 16];
+            while (!inflater.finished() && out.size() <= capBytes) {
+                int n = inflater.inflate(chunk);
+                if (n == 0 && (inflater.needsInput() || inflater.needsDictionary())) {
+                    break;
+                }
+                out.write(chunk, 0, n);
+            }
+            return out.toByteArray();
+        } finally {
+            inflater.end();
+        }
     }
 
     /** Undoes the horizontal predictor (2) on one row of a block in place: sums along the row, wrapping. */
@@ -679,7 +791,8 @@ public final class GeoTiffReader {
      * column: they are the neighbours' first) take the edge pixels' heights; other samples beyond the pixel centres
      * (a file covering part of its tile) are voids, for the void fill or the next DEM source. Voids are then filled as for .hgt tiles.
      *
-     * @throws DemException if the grid does not cover the tile's centre (a file named for another tile)
+     * @throws DemException if the grid covers no part of the tile a pixel across (a file named for another tile); a grid
+     *                      reaching more than a pixel beyond the tile is read for the tile alone, with a warning
      */
     public static HgtTile toTile(Grid g, TileId id) {
         return toTile(g, id, List.of());
@@ -693,13 +806,27 @@ public final class GeoTiffReader {
     /** {@link #toTile(Grid, TileId, List)} with the given void fill. */
     static HgtTile toTile(Grid g, TileId id, List<String> earlierWarnings, VoidFill fill) {
         int ipd = intervalsPerDegree(Math.min(g.centres().colSpacingDeg(), Math.abs(g.centres().rowSpacingDeg())));
-        double centreRow = g.rowOf(id.latSouthDeg() + 0.5), centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5));
-        if (!(centreRow >= -1 && centreRow <= g.height() && centreCol >= -1 && centreCol <= g.width())) {
-            double latA = g.centres().latOfRow(0), latB = g.centres().latOfRow(g.height() - 1);
-            double lonA = g.centres().lonOfCol(0), lonB = g.centres().lonOfCol(g.width() - 1);
-            throw new DemException(String.format(Locale.ROOT, "%s is named for tile %s but its pixels cover latitude "
-                    + "%.4f…%.4f°, longitude %.4f…%.4f°", g.source(), id, Math.min(latA, latB), Math.max(latA, latB),
-                    lonA, lonB));
+        // The tile in the grid's rows and columns (a south-up grid counts rows the other way).
+        double rowA = g.rowOf(id.latSouthDeg()), rowB = g.rowOf(id.latSouthDeg() + 1);
+        double centreCol = g.colOf(g.unwrap(id.lonWestDeg() + 0.5)), halfCols = 0.5 / g.centres().colSpacingDeg();
+        double tileRowLo = Math.min(rowA, rowB), tileRowHi = Math.max(rowA, rowB);
+        double tileColLo = centreCol - halfCols, tileColHi = centreCol + halfCols;
+        double latA = g.centres().latOfRow(0), latB = g.centres().latOfRow(g.height() - 1);
+        double lonA = g.centres().lonOfCol(0), lonB = g.centres().lonOfCol(g.width() - 1);
+        String covers = String.format(Locale.ROOT, "its pixels cover latitude %.4f…%.4f°, longitude %.4f…%.4f°",
+                Math.min(latA, latB), Math.max(latA, latB), lonA, lonB);
+        // Any part of the tile a pixel or more across will do (a file covering part of its tile leaves the rest void);
+        // none, or only its edge, is a file named for another tile.
+        if (!(Math.min(tileRowHi, g.height() - 1) - Math.max(tileRowLo, 0) >= 1
+                && Math.min(tileColHi, g.width() - 1) - Math.max(tileColLo, 0) >= 1)) {
+            throw new DemException(g.source() + " is named for tile " + id + " but " + covers);
+        }
+        List<String> beyond = new ArrayList<>();
+        if (tileRowLo - 1 > 0 || g.height() - 1 > tileRowHi + 1 || tileColLo - 1 > 0 || g.width() - 1 > tileColHi + 1) {
+            // Pixels more than one beyond the tile's edges (PixelIsArea and Copernicus' layouts stay within one) are not
+            // read: each tile is read from the file named for it.
+            beyond.add(g.source() + " reaches beyond its tile " + id + " (" + covers + "): only " + id
+                    + " is read from it; cut it into one-degree tiles, one file each (gdal_translate -projwin W N E S)");
         }
         int n = ipd + 1;
         float[] h = new float[n * n];
@@ -718,6 +845,7 @@ public final class GeoTiffReader {
             }
         }
         List<String> warnings = new ArrayList<>(earlierWarnings);
+        warnings.addAll(beyond);
         String zeros = Plausibility.zeroRowsBelowLand(h, n, g.source());
         if (zeros != null) {
             warnings.add(zeros);

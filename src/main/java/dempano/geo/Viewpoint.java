@@ -71,6 +71,26 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
         return h;
     }
 
+    /**
+     * A warning when the ground under the viewpoint (one of the four DEM samples its height is interpolated from) is a
+     * void the DEM had no height for, filled by interpolation, and the eye's altitude was taken from it (no absolute
+     * altitude given): that altitude is then invented, and may be hundreds of metres off (a summit in a void).
+     */
+    public java.util.Optional<String> filledVoidWarning(Mosaic mosaic) {
+        if (Double.isNaN(offsetMetres)) {
+            return java.util.Optional.empty(); // an absolute altitude: the DEM's height is not the eye's
+        }
+        int r = (int) Math.floor(mosaic.rowOf(latDeg)), c = (int) Math.floor(mosaic.colOf(lonDeg));
+        for (int k = 0; k < 4; k++) {
+            if ((mosaic.flags(r + (k >> 1), c + (k & 1)) & Mosaic.FLAG_FILLED_VOID) != 0) {
+                return java.util.Optional.of(String.format(Locale.ROOT, "the viewpoint stands in a void of the DEM, filled by "
+                        + "interpolation: its ground (%.1f m), and the eye's altitude from it, are invented; give the altitude "
+                        + "(--altitude-m), or a DEM with data there (another --dem-dir after this one)", groundElevationMetres));
+            }
+        }
+        return java.util.Optional.empty();
+    }
+
     /** The eye's altitude, metres: standing altitude plus eye height. */
     public double eyeAltitudeMetres() {
         return standingAltitudeMetres + eyeHeightMetres;

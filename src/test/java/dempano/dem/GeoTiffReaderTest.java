@@ -377,6 +377,94 @@ class GeoTiffReaderTest {
         assertEquals("unknown", GeoTiffReader.read(c).contributions().get(0).verticalDatum());
     }
 
+    /** The first image directory's offset in a little-endian TIFF. */
+    private static int firstDirectory(byte[] b) {
+        return java.nio.ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN).getInt(4);
+    }
+
+    /** Sets a SHORT tag's value in the first directory of a little-endian TIFF (a file that lies about itself). */
+    private static byte[] withShortTag(byte[] b, int tag, int value) {
+        java.nio.ByteBuffer buf = java.nio.ByteBuffer.wrap(b.clone()).order(ByteOrder.LITTLE_ENDIAN);
+        int at = firstDirectory(b), n = buf.getShort(at) & 0xffff;
+        for (int i = 0; i < n; i++) {
+            int entry = at + 2 + 12 * i;
+            if ((buf.getShort(entry) & 0xffff) == tag) {
+                assertEquals(3, buf.getShort(entry + 2), "tag " + tag + " is a SHORT");
+                buf.putShort(entry + 8, (short) value);
+                return buf.array();
+            }
+        }
+        throw new AssertionError("no tag " + tag);
+    }
+
+    /**
+     * Hostile files (a 282-byte GeoTIFF looping its directories grew the process to 18 GB; one declaring 46 341² pixels
+     * overflowed the heights' array; one declaring 30 000² took 3.7 GB before it was refused; a 1 MB Deflate strip
+     * inflated to 1 GB): each refused at once, naming the file and what is wrong.
+     */
+    @Test
+    void filesThatLieAboutTheirSizeOrLoopAreRefusedBeforeAnythingLargeIsAllocated() throws IOException {
+        byte[] good = GeoTiffTestFiles.bytes(srtmLike(false).withLayout(0, 121, ByteOrder.LITTLE_ENDIAN), GeoTiffReaderTest::plane);
+        // The directory names itself as the next one.
+        byte[] loop = good.clone();
+        int first = firstDirectory(good), entries = java.nio.ByteBuffer.wrap(good).order(ByteOrder.LITTLE_ENDIAN).getShort(first);
+        java.nio.ByteBuffer.wrap(loop).order(ByteOrder.LITTLE_ENDIAN).putInt(first + 2 + 12 * entries, first);
+        Path f = Files.write(dir.resolve("N46E008.tif"), loop);
+        DemException e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+        assertEquals(f + " is a corrupt TIFF file: its chain of image directories loops back to the one at byte " + first,
+                e.getMessage());
+        // More pixels than one file may hold (an int overflow before).
+        Files.write(f, withShortTag(withShortTag(good, 256, 46341), 257, 46341));
+        e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+        assertTrue(e.getMessage().startsWith(f + " declares 46341 × 46341 pixels, more than dempano reads from one file (268 M;"),
+                e.getMessage());
+        // Fewer, but more than its one strip holds, raw or compressed: refused before the heights are allocated.
+        for (int compression : new int[] {NONE, DEFLATE, LZW}) {
+            byte[] one = GeoTiffTestFiles.bytes(srtmLike(false).withCompression(compression, 1)
+                    .withLayout(0, 121, ByteOrder.LITTLE_ENDIAN), GeoTiffReaderTest::plane);
+            Files.write(f, withShortTag(withShortTag(withShortTag(one, 256, 15000), 257, 15000), 278, 15000));
+            e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+            assertTrue(e.getMessage().matches(java.util.regex.Pattern.quote(f + ": image block 0 holds ") + "\\d+ bytes, 450000000 expected.* "
+                    + java.util.regex.Pattern.quote("for its 15000 × 15000 pixels (truncated or corrupt file, or not the 15000 × 15000 pixels it declares?)")),
+                    compression + ": " + e.getMessage());
+        }
+        // A Deflate strip holding more than its block: 121 rows of data in a strip declared 60 rows high.
+        byte[] deflated = GeoTiffTestFiles.bytes(srtmLike(false).withCompression(DEFLATE, 1)
+                .withLayout(0, 121, ByteOrder.LITTLE_ENDIAN), GeoTiffReaderTest::plane);
+        Files.write(f, withShortTag(withShortTag(deflated, 257, 60), 278, 60));
+        e = assertThrows(DemException.class, () -> GeoTiffReader.readGrid(f));
+        assertEquals(f + ": image block 0 decompresses to more than the 14520 bytes of its 121 × 60 pixels (corrupt file, "
+                + "or a decompression bomb)", e.getMessage());
+    }
+
+    /**
+     * A file covering part of its tile, even without its centre, is read with the rest void (a regional DEM before
+     * SRTM in the sources); one reaching beyond its tile is read for that tile with a warning.
+     */
+    @Test
+    void aFileCoveringPartOfItsTileIsReadAndOneReachingBeyondItIsReadWithAWarning() throws IOException {
+        // 46.0…46.4 N, 8.6…9.0 E: the south-east corner, without the tile's centre.
+        Path part = GeoTiffTestFiles.write(dir.resolve("N46E008.tif"), GeoTiffTestFiles.geographic(49, 49, 8.6, 46.4, D, D, true),
+                (r, c) -> 700 + r + c);
+        HgtTile t = GeoTiffReader.read(part);
+        assertEquals(700 + 12 + 24, t.heightAt(46.3, 8.8), 1e-3, "a height in the part covered");
+        assertTrue(t.isFilledVoid(60, 60), "the centre is a void (filled, or the next source's)");
+        assertFalse(t.isFilledVoid(96, 96), "a sample of the part covered is data");
+        assertTrue(t.voids().voidCells() > 121 * 121 / 2, "most of the tile is void: " + t.voids());
+        // Two degrees wide under a one-degree name.
+        Path wide = GeoTiffTestFiles.write(dir.resolve("N46E008_wide.tif"), GeoTiffTestFiles.geographic(241, 121, 8, 47, D, D, true),
+                GeoTiffReaderTest::plane);
+        HgtTile w = GeoTiffReader.toTile(GeoTiffReader.readGrid(wide), TileId.of(46, 8));
+        assertEquals(plane(60, 120), w.heightMetres(60, 120), "the tile's own part");
+        assertTrue(w.warnings().stream().anyMatch(m -> m.startsWith(wide + " reaches beyond its tile N46E008 (its pixels cover "
+                + "latitude 46.0000…47.0000°, longitude 8.0000…10.0000°): only N46E008 is read from it")), w.warnings().toString());
+        // Only the edge shared with the tile named: refused (a file named for its neighbour).
+        Path edge = GeoTiffTestFiles.write(dir.resolve("N46E008_edge.tif"), GeoTiffTestFiles.geographic(121, 121, 9, 47, D, D, true),
+                GeoTiffReaderTest::plane);
+        DemException e = assertThrows(DemException.class, () -> GeoTiffReader.toTile(GeoTiffReader.readGrid(edge), TileId.of(46, 8)));
+        assertTrue(e.getMessage().startsWith(edge + " is named for tile N46E008 but its pixels cover"), e.getMessage());
+    }
+
     @Test
     void aFileNamedForAnotherTileIsRefused() throws IOException {
         Path f = GeoTiffTestFiles.write(dir.resolve("N45E008.tif"), srtmLike(false), GeoTiffReaderTest::plane);
