@@ -97,7 +97,7 @@ public final class FlyCommand implements Callable<Integer> {
             dempano.dem.TileSelection.checkCoordinates(latDeg, lonDeg);
             for (Path d : demDirs) {
                 if (!java.nio.file.Files.isDirectory(d)) {
-                    throw new dempano.dem.DemException("DEM directory " + d + " does not exist or is not a directory");
+                    throw new dempano.dem.DemException(dempano.dem.DemDirectory.notAFolder(d));
                 }
             }
         }

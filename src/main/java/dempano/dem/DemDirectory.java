@@ -60,13 +60,23 @@ public final class DemDirectory implements DemSource {
      * @param cachedTiles tiles kept in memory
      * @param voidFill    how the voids of its tiles are filled (they are still marked as filled voids)
      */
+    /** Why a DEM directory that is none is refused: missing, or a file (a tile given instead of its folder). */
+    public static String notAFolder(Path directory) {
+        if (Files.exists(directory)) {
+            Path parent = directory.toAbsolutePath().getParent();
+            return "DEM directory " + directory + " is a file, not a folder: give the folder that holds the tiles"
+                    + (parent == null ? "" : " (" + parent + ")");
+        }
+        return "DEM directory " + directory + " does not exist";
+    }
+
     public DemDirectory(Path directory, int cachedTiles, VoidFill voidFill) {
         this.voidFill = java.util.Objects.requireNonNull(voidFill);
         if (directory.toString().isEmpty()) { // Path.of("") is the working directory: a --dem-dir "" is a mistake
             throw new DemException("DEM directory is empty (\"\"): give a folder");
         }
         if (!Files.isDirectory(directory)) {
-            throw new DemException("DEM directory " + directory + " does not exist or is not a directory");
+            throw new DemException(notAFolder(directory));
         }
         this.directory = directory;
         Map<TileId, List<Candidate>> index = new TreeMap<>();

@@ -374,9 +374,9 @@ public final class GeoTiffReader {
 
     /**
      * Refuses a file whose chain of image directories loops back or runs on without end (the TIFF library follows it
-     * for ever, holding every directory: a 282-byte file whose first directory named itself as the next grew to 18 GB).
-     * Only the chain is walked (each directory's entry count and next offset); anything else wrong is the library's to
-     * find.
+     * for ever, holding every directory: a 282-byte file whose first directory named itself as the next grew to 18 GB),
+     * or that holds an empty text tag (the library fails with an index out of bounds). Only the chain and the
+     * entries' types and counts are read; anything else wrong is the library's to find.
      */
     static void checkDirectoryChain(String source, byte[] b) {
         if (b.length < 8 || !(b[0] == 'I' && b[1] == 'I' || b[0] == 'M' && b[1] == 'M')) {
@@ -394,12 +394,36 @@ public final class GeoTiffReader {
                 throw new DemException(source + " is a corrupt TIFF file: its chain of image directories runs past "
                         + MAX_DIRECTORIES + " directories");
             }
-            long next = offset + 2 + 12L * (buf.getShort((int) offset) & 0xffff);
+            int entries = buf.getShort((int) offset) & 0xffff;
+            long next = offset + 2 + 12L * entries;
             if (next + 4 > b.length) {
                 return; // cut short: the library says so
             }
+            for (int i = 0; i < entries; i++) {
+                int entry = (int) offset + 2 + 12 * i;
+                if (buf.getShort(entry + 2) == 2 && emptyText(buf, entry)) { // (the library fails on it, naming nothing)
+                    int tag = buf.getShort(entry) & 0xffff;
+                    throw new DemException(source + " is a corrupt TIFF file: its text tag " + tag
+                            + (tag == 42113 ? " (GDAL_NODATA)" : "") + " is empty (no characters before its closing NUL)");
+                }
+            }
             offset = buf.getInt((int) next) & 0xffffffffL;
         }
+    }
+
+    /** Whether a text (ASCII) entry holds nothing but NULs, or nothing at all. */
+    private static boolean emptyText(ByteBuffer buf, int entry) {
+        long count = buf.getInt(entry + 4) & 0xffffffffL;
+        long at = count <= 4 ? entry + 8 : buf.getInt(entry + 8) & 0xffffffffL;
+        if (at + count > buf.capacity()) {
+            return false; // cut short: the library says so
+        }
+        for (long k = 0; k < count; k++) {
+            if (buf.get((int) (at + k)) != 0) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The first image that is not a reduced-resolution overview or a mask (NewSubfileType 0). */

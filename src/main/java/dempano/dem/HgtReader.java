@@ -48,6 +48,14 @@ public final class HgtReader {
         } catch (NoSuchFileException e) {
             throw new DemException(file + ": no such file", e);
         } catch (ZipException e) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("bad compression method: (\\d+)")
+                    .matcher(String.valueOf(e.getMessage()));
+            if (m.find()) {
+                int method = Integer.parseInt(m.group(1));
+                throw new DemException(file + " is compressed with zip method " + method
+                        + (ZIP_METHODS.containsKey(method) ? " (" + ZIP_METHODS.get(method) + ")" : "")
+                        + ", which dempano cannot read (only stored and Deflate); unzip it, or zip it again with Deflate", e);
+            }
             throw new DemException(file + " is not a zip archive, or a corrupt one (" + e.getMessage() + ")", e);
         } catch (IOException e) {
             throw new DemException(file + ": cannot read (" + e + ")", e);
@@ -106,6 +114,10 @@ public final class HgtReader {
                 + 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + " for SRTM1; truncated or not a .hgt?)");
     }
 
+    /** Zip compression methods Java's zip reader does not read, by name (APPNOTE 4.4.5). */
+    private static final java.util.Map<Integer, String> ZIP_METHODS = java.util.Map.of(9, "Deflate64", 12, "bzip2", 14, "LZMA",
+            93, "Zstandard", 95, "xz", 98, "PPMd", 99, "AES-encrypted");
+
     /**
      * The one {@code .hgt} entry of a zip, read through the central directory. An entry named like a
      * tile must be the zip's own tile; other entry names (e.g. {@code data.hgt}) are accepted.
@@ -132,10 +144,18 @@ public final class HgtReader {
                 throw new DemException(file + ": its name says tile " + id + " but the zip holds " + found.getName()
                         + " (tile " + TileId.parseFileName(base) + "); rename the file or fetch the right tile");
             }
+            // Its size first (recorded in the central directory): an entry of another size is no tile, whatever it holds.
+            if (found.getSize() >= 0) {
+                samplesForLength(file + ": its entry " + found.getName(), found.getSize());
+            }
             byte[] bytes;
             try (InputStream in = zip.getInputStream(found)) {
                 // Cap the read so a lying archive cannot exhaust memory.
                 bytes = in.readNBytes(2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + 1);
+            }
+            if (bytes.length > 2 * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES) {
+                throw new DemException(file + ": its entry " + found.getName() + " holds more than an SRTM1 tile's "
+                        + 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + " bytes (not a .hgt, or a corrupt zip)");
             }
             // ZipFile checks no checksum: a flipped bit in a stored (or deflated) entry would be a wrong height.
             java.util.zip.CRC32 crc = new java.util.zip.CRC32();

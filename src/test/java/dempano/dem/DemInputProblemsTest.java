@@ -27,6 +27,16 @@ class DemInputProblemsTest {
     @TempDir
     Path dir;
 
+    @Test
+    void aTileGivenForItsFolderOrAMissingFolderIsSaidSo() throws IOException {
+        Path tile = HgtTestFiles.write(dir, "N43E007.hgt", srtm3(new TileId(43, 7), 0));
+        DemException e = assertThrows(DemException.class, () -> new DemDirectory(tile));
+        assertEquals("DEM directory " + tile + " is a file, not a folder: give the folder that holds the tiles (" + dir.toAbsolutePath() + ")",
+                e.getMessage());
+        e = assertThrows(DemException.class, () -> new DemDirectory(dir.resolve("none")));
+        assertEquals("DEM directory " + dir.resolve("none") + " does not exist", e.getMessage());
+    }
+
     /** Smooth terrain continuous across tiles, so neighbouring tiles' shared edges agree. */
     static int terrain(double lat, double lon) {
         return (int) Math.round(600 + 250 * Math.sin(lat * 9) + 200 * Math.cos(lon * 7));
@@ -128,6 +138,36 @@ class DemInputProblemsTest {
             Files.write(d.resolve("N43E007.hgt.zip"), zip);
         }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
                 List.of("{dir}/N43E007.hgt.zip", "corrupt zip", "checksum of N43E007.hgt does not match")));
+        t.add(Arguments.of("zip entry larger than any tile (its recorded size)", (Setup) d -> {
+            Path p = Files.write(d.resolve("big.bin"), new byte[2 * 3601 * 3601 + 2]);
+            HgtTestFiles.zip(d, "N43E007.hgt.zip", "N43E007.hgt", p.toString());
+        }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
+                List.of("{dir}/N43E007.hgt.zip: its entry N43E007.hgt: 25934404 bytes is not an SRTM tile")));
+        t.add(Arguments.of("zip compressed with bzip2", (Setup) d -> {
+            byte[] tile = srtm3(new TileId(43, 7), 0);
+            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+            crc.update(tile);
+            java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+            try (java.util.zip.ZipOutputStream z = new java.util.zip.ZipOutputStream(bytes)) {
+                java.util.zip.ZipEntry e = new java.util.zip.ZipEntry("N43E007.hgt");
+                e.setMethod(java.util.zip.ZipEntry.STORED);
+                e.setSize(tile.length);
+                e.setCrc(crc.getValue());
+                z.putNextEntry(e);
+                z.write(tile);
+                z.closeEntry();
+            }
+            byte[] zip = bytes.toByteArray();
+            // The method (2 bytes, little-endian) in the local header (offset 8) and the central directory's (10).
+            zip[8] = 12;
+            int central = zip.length - 4;
+            while (!(zip[central] == 'P' && zip[central + 1] == 'K' && zip[central + 2] == 1 && zip[central + 3] == 2)) {
+                central--;
+            }
+            zip[central + 10] = 12;
+            Files.write(d.resolve("N43E007.hgt.zip"), zip);
+        }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
+                List.of("{dir}/N43E007.hgt.zip is compressed with zip method 12 (bzip2), which dempano cannot read")));
         t.add(Arguments.of("a tile without one valid sample", (Setup) d -> {
             byte[] voids = new byte[2 * 1201 * 1201];
             for (int i = 0; i < voids.length; i += 2) {

@@ -428,6 +428,11 @@ class GeoTiffReaderTest {
                     + java.util.regex.Pattern.quote("for its 15000 × 15000 pixels (truncated or corrupt file, or not the 15000 × 15000 pixels it declares?)")),
                     compression + ": " + e.getMessage());
         }
+        // An empty GDAL_NODATA (only its closing NUL): the library failed on it with an index out of bounds.
+        Files.write(f, GeoTiffTestFiles.bytes(srtmLike(false).withNodata(""), GeoTiffReaderTest::plane));
+        e = assertThrows(DemException.class, () -> GeoTiffReader.read(f));
+        assertEquals(f + " is a corrupt TIFF file: its text tag 42113 (GDAL_NODATA) is empty (no characters before its closing NUL)",
+                e.getMessage());
         // A Deflate strip holding more than its block: 121 rows of data in a strip declared 60 rows high.
         byte[] deflated = GeoTiffTestFiles.bytes(srtmLike(false).withCompression(DEFLATE, 1)
                 .withLayout(0, 121, ByteOrder.LITTLE_ENDIAN), GeoTiffReaderTest::plane);
