@@ -140,7 +140,7 @@ public final class TerrainRayProbe implements RayProbe {
         if (!(fromMetres > 0 && to > fromMetres) || (to - fromMetres) * horizontal > STRAIGHT_PATH_METRES) {
             return Double.NaN;
         }
-        return trianglesBetween(e, n, u, fromMetres, to, new double[POINT], Double.NaN);
+        return trianglesBetween(e, n, u, fromMetres, to, new double[POINT], Double.NaN, Double.NaN);
     }
 
     @Override
@@ -158,19 +158,45 @@ public final class TerrainRayProbe implements RayProbe {
         if (!(start > 0)) {
             return Double.NaN;
         }
-        double[] bracket = crestSafeBracket(e, n, u, a, tMax, horizontalShare, pa, pb);
-        if (bracket.length == 1) {
-            // Nothing met up to the end: out to the range of sight (or off the mosaic) that is +∞, short of it undecided.
-            return bracket[0] >= rangeMetres / Math.max(horizontal, 1e-300) ? Double.POSITIVE_INFINITY : Double.NaN;
-        }
-        a = bracket[0];
-        double ca = bracket[1], b = bracket[2], cb = bracket[3];
-        // The bracket is a piece of the ray within a cell (or less): the drawn triangles around it decide, as
-        // below, without first narrowing it. Only where none of them is met is the crossing of the search's
-        // surface narrowed down to the tolerance and taken.
-        double onDrawn = onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb, Double.NaN);
-        if (!Double.isNaN(onDrawn)) {
-            return onDrawn;
+        double[] bracket;
+        double ca, b, cb;
+        for (int clipped = 0; ; clipped++) {
+            bracket = crestSafeBracket(e, n, u, a, tMax, horizontalShare, pa, pb);
+            if (bracket.length == 1) {
+                // Nothing met up to the end: out to the range of sight (or off the mosaic) that is +∞, short of it undecided.
+                return bracket[0] >= rangeMetres / Math.max(horizontal, 1e-300) ? Double.POSITIVE_INFINITY : Double.NaN;
+            }
+            a = bracket[0];
+            ca = bracket[1];
+            b = bracket[2];
+            cb = bracket[3];
+            // The bracket is a piece of the ray within a cell (or less): the drawn triangles around it decide, as
+            // below (onTriangles), without first narrowing it.
+            double mid = 0.5 * (a + b), window = 1.5 * cellStepMetres / horizontalShare;
+            double onDrawn = trianglesBetween(e, n, u, Math.max(1e-3, mid - window), mid + window, pb, Double.NaN, UNWALKABLE);
+            if (onDrawn == UNWALKABLE) {
+                break;
+            }
+            if (!Double.isNaN(onDrawn)) {
+                return onDrawn;
+            }
+            // None met: the ray clipped a crest of the search's surface (heights interpolated in latitude and
+            // longitude) that the drawn one, planar in 3-D, holds centimetres lower, and passed over it (at 70° N a pixel
+            // took such a crest 1296 m off for its hit; the drawn triangles meet its ray 1406 m off). Where the ray is
+            // above the search's surface again within a few cells, the triangles up to there decide, else the search goes
+            // on from there. (Not above again: the crossing below is narrowed and taken, as before.)
+            double past = clipped < MAX_CLIPPED_CRESTS ? aboveAgain(e, n, u, b, tMax, horizontalShare, pb) : Double.NaN;
+            if (Double.isNaN(past)) {
+                break;
+            }
+            double between = trianglesBetween(e, n, u, Math.max(1e-3, mid - window), past + window, pb, Double.NaN, UNWALKABLE);
+            if (between == UNWALKABLE) {
+                break;
+            }
+            if (!Double.isNaN(between)) {
+                return between;
+            }
+            a = past;
         }
         // Illinois regula falsi: the clearance is close to linear along the ray within a triangle.
         int side = 0;
@@ -199,6 +225,34 @@ public final class TerrainRayProbe implements RayProbe {
         return onTriangles(e, n, u, 0.5 * (a + b), horizontalShare, pb, 0.5 * (a + b));
     }
 
+    /** What {@link #trianglesBetween} gives where it cannot walk (the stretch leaves the mosaic or is too long). */
+    private static final double UNWALKABLE = Double.NEGATIVE_INFINITY;
+
+    /** Crests of the search's surface that the ray clips but the drawn surface does not, passed over in one search. */
+    private static final int MAX_CLIPPED_CRESTS = 8;
+
+    /**
+     * The first point past {@code t} (where the ray is under the search's surface) at which it is above it again, within
+     * three cells' length of ray, stepped a tenth of a cell at a time; NaN if none (or off the mosaic, or past tMax).
+     */
+    private double aboveAgain(double e, double n, double u, double t, double tMax, double horizontalShare, double[] scratch) {
+        double step = 0.1 * cellStepMetres / horizontalShare;
+        for (int i = 1; i <= 30; i++) {
+            double ti = t + i * step;
+            if (ti >= tMax) {
+                return Double.NaN;
+            }
+            double c = clearance(e, n, u, ti, scratch);
+            if (Double.isNaN(c)) {
+                return Double.NaN;
+            }
+            if (c > 0) {
+                return ti;
+            }
+        }
+        return Double.NaN;
+    }
+
     /**
      * The crossing found on the surface as the reference and the GPU draw it: planar triangles
      * between vertices placed in 3-D (the search's clearance interpolates heights in latitude and
@@ -210,16 +264,17 @@ public final class TerrainRayProbe implements RayProbe {
     private double onTriangles(double e, double n, double u, double approximate, double horizontalShare, double[] scratch,
                                double otherwise) {
         double window = 1.5 * cellStepMetres / horizontalShare;
-        return trianglesBetween(e, n, u, Math.max(1e-3, approximate - window), approximate + window, scratch, otherwise);
+        return trianglesBetween(e, n, u, Math.max(1e-3, approximate - window), approximate + window, scratch, otherwise, otherwise);
     }
 
     /**
      * The nearest hit of the ray (ENU direction) on the drawn triangles of the cells it passes over between
      * {@code from} and {@code to} metres (a straight path in rows and columns, with a margin of 0.05 cells), else
-     * {@code otherwise}; {@code otherwise} too when the stretch leaves the mosaic or is longer than
+     * {@code otherwise}; {@code unwalkable} when the stretch leaves the mosaic or is longer than
      * {@link #MAX_PATH_SAMPLES} quarter cells.
      */
-    private double trianglesBetween(double e, double n, double u, double from, double to, double[] scratch, double otherwise) {
+    private double trianglesBetween(double e, double n, double u, double from, double to, double[] scratch, double otherwise,
+                                    double unwalkable) {
         clearance(e, n, u, from, scratch);
         double rowA = scratch[ROW], colA = scratch[COL];
         clearance(e, n, u, to, scratch);
@@ -230,7 +285,7 @@ public final class TerrainRayProbe implements RayProbe {
         // path runs along, nearest first.
         int samples = (int) Math.ceil(4 * (Math.abs(rowB - rowA) + Math.abs(colB - colA))) + 2;
         if (r0 < 0 || c0 < 0 || r1 + 1 >= mosaic.rows() || c1 + 1 >= mosaic.cols() || samples > MAX_PATH_SAMPLES) {
-            return otherwise;
+            return unwalkable;
         }
         // Visited cells (this walk's: keys carry its stamp) and placed vertices (this probe's, kept from walk to walk:
         // neighbouring pixels' rays cross the same cells), direct-mapped by grid index: a vertex serves four cells, and

@@ -165,6 +165,10 @@ class ExactDistanceTest {
         System.out.println(report);
         assertTrue(c.shareOver5Percent() < 5e-4, report);
         assertTrue(c.p99Relative() < 1e-3, report);
+        // Not one pixel 1 % off (measured: 0.45 % on the knife-edge ridge, 1.2e-7 elsewhere); a crest of the heights
+        // interpolated in latitude and longitude, which the drawn triangles hold centimetres lower, taken for the hit
+        // put one pixel at 70° N 7.8 % near.
+        assertTrue(c.maxRelative() < 0.01, report);
         // Measured 0.14 % (ramp), 2.3 % (knife-edge ridge), 0 (lake), 0.76 % (70° N); the goal is 5 %. Beside the
         // sky the terrain probe steps a DEM cell at a time; a crest the ray crosses over less than that can be missed.
         assertTrue(c.skylineColumnsOff() < 0.04, report);
