@@ -4,7 +4,7 @@ package dempano.batch;
  * Told of a batch's progress: on the thread that runs the batch, but {@link #rowFinished} of a panorama row on the
  * batch's writer thread (as soon as its files are in place, while the next row renders). Never two calls at once (the
  * batch calls it holding the listener's own lock), rows finished in row order. Every method has an empty default.
- * A listener that throws stops nothing: the exception is ignored by the batch.
+ * A listener that throws stops nothing: the exception or error (an AssertionError, say) is ignored by the batch.
  */
 public interface BatchListener {
     /** Before the first row: the number of rows (valid or not). */

@@ -37,6 +37,13 @@ public record PanoramaMetadata(dempano.geo.Viewpoint viewpoint, double rangeMetr
                                List<TileSource> demSources) {
     public PanoramaMetadata {
         java.util.Objects.requireNonNull(viewpoint, "viewpoint");
+        // Immutable as the panorama that holds it (the renderer's own lists were handed out, and a caller's change
+        // reached the files written later).
+        tilesUsed = tilesUsed == null ? null : List.copyOf(tilesUsed);
+        tilesMissing = tilesMissing == null ? null : List.copyOf(tilesMissing);
+        warnings = warnings == null ? null : List.copyOf(warnings);
+        timingsMillis = timingsMillis == null ? null : java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(timingsMillis));
+        demSources = demSources == null ? null : List.copyOf(demSources);
     }
 
     /** Viewpoint latitude, degrees. */

@@ -71,6 +71,32 @@ class BatchRunTest {
         }
     }
 
+    /** A listener that throws an Error (a test's failed assertion) stops nothing either: every row is still recorded. */
+    @Test
+    void aListenerThrowingAnErrorStopsNothing(@TempDir Path out) throws IOException {
+        List<BatchRow> rows = List.of(BatchRow.invalid(2, "a", "line 2: bad"), BatchRow.invalid(3, "b", "line 3: bad"),
+                BatchRow.invalid(4, "c", "line 4: bad"));
+        List<String> finishedSeen = new ArrayList<>();
+        BatchSummary s;
+        try (PanoramaRenderer r = PanoramaRenderer.open(dem)) {
+            s = new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT).render(rows, new BatchListener() {
+                @Override
+                public void rowStarted(BatchRow row, int index) {
+                    throw new AssertionError("in rowStarted");
+                }
+
+                @Override
+                public void rowFinished(BatchResult result, int index) {
+                    finishedSeen.add(result.id());
+                    throw new AssertionError("in rowFinished");
+                }
+            });
+        }
+        assertEquals(List.of("a", "b", "c"), finishedSeen);
+        assertEquals(3, s.errorCount());
+        assertEquals(List.of("a", "b", "c"), results(out).stream().map(c -> c.get("id")).toList());
+    }
+
     @Test
     void goodRowsEqualSingleRendersAndABadRowIsReportedWhileTheRestGoOn(@TempDir Path out) throws IOException {
         double[] vp = DemoTerrain.viewpoint();

@@ -103,4 +103,21 @@ class PanoramaAccessTest {
         assertEquals(3.25, P.elevationOfRow(-1), 1e-12);
         assertEquals(-0.75, P.elevationOfRow(H - 1), 1e-12);
     }
+    /** The metadata's lists and maps cannot be changed through its accessors, nor through the caller's lists it was made from. */
+    @org.junit.jupiter.api.Test
+    void metadataListsAndMapsAreImmutableCopies() {
+        java.util.List<String> warnings = new java.util.ArrayList<>(List.of("a warning"));
+        java.util.Map<String, Double> timings = new java.util.LinkedHashMap<>(Map.of("draw", 1.0));
+        PanoramaMetadata m = new PanoramaMetadata(new dempano.geo.Viewpoint(46, 8, 1000, 0, 1000, 2), 100_000, 0.13,
+                DepthMode.SHADER_RANGE, 1, 100_000, 8, 100, 100, new java.util.ArrayList<>(List.of("N46E008")),
+                new java.util.ArrayList<>(), warnings, timings, "test", 0, 0, null, new java.util.ArrayList<>());
+        warnings.add("added later");
+        timings.clear();
+        assertEquals(List.of("a warning"), m.warnings());
+        assertEquals(Map.of("draw", 1.0), m.timingsMillis());
+        assertThrows(UnsupportedOperationException.class, () -> m.warnings().add("x"));
+        assertThrows(UnsupportedOperationException.class, () -> m.tilesUsed().clear());
+        assertThrows(UnsupportedOperationException.class, () -> m.timingsMillis().clear());
+        assertThrows(UnsupportedOperationException.class, () -> m.demSources().clear());
+    }
 }
