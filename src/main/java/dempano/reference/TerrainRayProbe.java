@@ -452,11 +452,13 @@ public final class TerrainRayProbe implements RayProbe {
         rates(anchor, dir);
         int level = LEVELS - 1;
         double[] crossings = new double[16];
+        boolean cellStepNeedsAnchor = false;
         while (true) {
             if (t >= tMax) {
                 return new double[] {tMax};
             }
-            if ((t - anchorT) * horizontalShare >= ANCHOR_SPAN_METRES) {
+            if (cellStepNeedsAnchor || (t - anchorT) * horizontalShare >= ANCHOR_SPAN_METRES) {
+                cellStepNeedsAnchor = false;
                 double c = clearance(e, n, u, t, anchor);
                 if (Double.isNaN(c)) {
                     return new double[] {Double.POSITIVE_INFINITY};
@@ -489,17 +491,10 @@ public final class TerrainRayProbe implements RayProbe {
                 // The edges are crossed where the path extrapolated from the anchor says, up to 2 km back: a metre or two
                 // off there (0.02 cells), beside a crest on an edge, a ray grazing it by less would step over it (one
                 // pixel of Mount Washington's panorama, whose ray met a ridge 29.8 km off, passed for 41.9 km searched
-                // from 28.7 km, met from 28.8 km). From an anchor where the step starts the path is good to a millimetre.
-                double c = clearance(e, n, u, t, anchor);
-                if (Double.isNaN(c)) {
-                    return new double[] {Double.POSITIVE_INFINITY};
-                }
-                if (!(c > 0)) { // proven above up to here: only rounding can put it under
-                    return new double[] {t - 1e-6 * t, ct, t, c};
-                }
-                rates(anchor, dir);
-                anchorT = t;
-                ct = c;
+                // from 28.7 km, met from 28.8 km). From an anchor where the step starts the path is good to a millimetre
+                // (and the cell may then be proven above after all).
+                cellStepNeedsAnchor = true;
+                continue;
             }
             int count = edgeCrossings(anchor, anchorT, t, t1, crossings);
             double previous = t, cPrevious = ct;

@@ -120,19 +120,7 @@ class DemInputProblemsTest {
                 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true, List.of("{dir}/N43E007.hgt.zip", "is not a zip archive")));
         t.add(Arguments.of("stored zip with one bit flipped in its tile", (Setup) d -> {
             byte[] tile = srtm3(new TileId(43, 7), 0);
-            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
-            crc.update(tile);
-            java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
-            try (java.util.zip.ZipOutputStream z = new java.util.zip.ZipOutputStream(bytes)) {
-                java.util.zip.ZipEntry e = new java.util.zip.ZipEntry("N43E007.hgt");
-                e.setMethod(java.util.zip.ZipEntry.STORED); // the tile's bytes as they are, so one can be flipped
-                e.setSize(tile.length);
-                e.setCrc(crc.getValue());
-                z.putNextEntry(e);
-                z.write(tile);
-                z.closeEntry();
-            }
-            byte[] zip = bytes.toByteArray();
+            byte[] zip = storedZip("N43E007.hgt", tile); // the tile's bytes as they are, so one can be flipped
             int sample = 2 * (600 * 1201 + 600) + 1; // the low byte of the sample under the viewpoint: still plausible
             zip[indexOf(zip, tile) + sample] ^= 4;
             Files.write(d.resolve("N43E007.hgt.zip"), zip);
@@ -144,20 +132,7 @@ class DemInputProblemsTest {
         }, 43.5, 7.5, MissingTilePolicy.AUTO, Double.NaN, true,
                 List.of("{dir}/N43E007.hgt.zip: its entry N43E007.hgt: 25934404 bytes is not an SRTM tile")));
         t.add(Arguments.of("zip compressed with bzip2", (Setup) d -> {
-            byte[] tile = srtm3(new TileId(43, 7), 0);
-            java.util.zip.CRC32 crc = new java.util.zip.CRC32();
-            crc.update(tile);
-            java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
-            try (java.util.zip.ZipOutputStream z = new java.util.zip.ZipOutputStream(bytes)) {
-                java.util.zip.ZipEntry e = new java.util.zip.ZipEntry("N43E007.hgt");
-                e.setMethod(java.util.zip.ZipEntry.STORED);
-                e.setSize(tile.length);
-                e.setCrc(crc.getValue());
-                z.putNextEntry(e);
-                z.write(tile);
-                z.closeEntry();
-            }
-            byte[] zip = bytes.toByteArray();
+            byte[] zip = storedZip("N43E007.hgt", srtm3(new TileId(43, 7), 0));
             // The method (2 bytes, little-endian) in the local header (offset 8) and the central directory's (10).
             zip[8] = 12;
             int central = zip.length - 4;
@@ -242,6 +217,23 @@ class DemInputProblemsTest {
         Assumptions.assumeFalse(Files.isReadable(p), "cannot make a file unreadable here; test skipped");
         DemException e = assertThrows(DemException.class, () -> new DemDirectory(dir).tile(new TileId(43, 7)));
         assertTrue(e.getMessage().contains(p.toString()) && e.getMessage().contains("not readable"), e.getMessage());
+    }
+
+    /** A zip of one entry stored uncompressed (its bytes as they are), with its checksum. */
+    static byte[] storedZip(String name, byte[] content) throws IOException {
+        java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+        crc.update(content);
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        try (java.util.zip.ZipOutputStream z = new java.util.zip.ZipOutputStream(bytes)) {
+            java.util.zip.ZipEntry e = new java.util.zip.ZipEntry(name);
+            e.setMethod(java.util.zip.ZipEntry.STORED);
+            e.setSize(content.length);
+            e.setCrc(crc.getValue());
+            z.putNextEntry(e);
+            z.write(content);
+            z.closeEntry();
+        }
+        return bytes.toByteArray();
     }
 
     /** Where {@code part}'s first 64 bytes start in {@code whole}. */

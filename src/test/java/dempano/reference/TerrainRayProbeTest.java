@@ -231,18 +231,22 @@ class TerrainRayProbeTest {
         assertTrue(cellMarchDiffers >= rays / 20, "a march by whole cells should miss crests here: " + cellMarchDiffers);
     }
 
+    /** A probe from 2 m above Mount Washington's summit on the shared SRTM3 tiles, standard refraction. */
+    private static TerrainRayProbe washingtonProbe(double rangeMetres) throws java.io.IOException {
+        Mosaic mosaic = Mosaic.of(new dempano.dem.DemDirectory(dempano.SharedData.demDir()),
+                TileSelection.around(44.2706, -71.3033, rangeMetres), MissingTilePolicy.AUTO);
+        return new TerrainRayProbe(mosaic, Viewpoint.onDem(mosaic, 44.2706, -71.3033, 2, 0), Refraction.STANDARD, rangeMetres);
+    }
+
     /**
      * The same on real relief: Mount Washington's SRTM3 tile (N44W072) from 2 m above the summit,
      * rays from 6° to 0.5° under the horizon, out to 40 km, against a march by 1/8 cell.
      */
     @Test
     void crestSafeSearchOnRealReliefFindsWhatADenseMarchFinds() throws Exception {
-        dempano.dem.DemDirectory dem = new dempano.dem.DemDirectory(dempano.SharedData.demDir());
         double range = 40_000;
-        Mosaic mosaic = Mosaic.of(dem, TileSelection.around(44.2706, -71.3033, range), MissingTilePolicy.AUTO);
-        Viewpoint eye = Viewpoint.onDem(mosaic, 44.2706, -71.3033, 2, 0);
-        TerrainRayProbe probe = new TerrainRayProbe(mosaic, eye, Refraction.STANDARD, range);
-        double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / mosaic.intervalsPerDegree() * Math.cos(Math.toRadians(44.27));
+        TerrainRayProbe probe = washingtonProbe(range);
+        double cellMetres = Math.PI / 180 * Ellipsoid.A_METRES / 1200 * Math.cos(Math.toRadians(44.27)); // SRTM3
         Random random = new Random(5);
         int rays = 300, hits = 0, missed = 0;
         for (int i = 0; i < rays; i++) {
@@ -272,11 +276,7 @@ class TerrainRayProbeTest {
      */
     @Test
     void aRayGrazingACrestOnAnEdgeMeetsItWhereverTheSearchStarts() throws Exception {
-        dempano.dem.DemDirectory dem = new dempano.dem.DemDirectory(dempano.SharedData.demDir());
-        double range = 100_000;
-        Mosaic mosaic = Mosaic.of(dem, TileSelection.around(44.2706, -71.3033, range), MissingTilePolicy.AUTO);
-        Viewpoint eye = Viewpoint.onDem(mosaic, 44.2706, -71.3033, 2, 0);
-        TerrainRayProbe probe = new TerrainRayProbe(mosaic, eye, Refraction.STANDARD, range);
+        TerrainRayProbe probe = washingtonProbe(100_000);
         double az = Math.toRadians(54.125), el = Math.toRadians(-2.775);
         double e = Math.cos(el) * Math.sin(az), n = Math.cos(el) * Math.cos(az), u = Math.sin(el);
         double truth = probe.nearestHitBetweenMetres(e, u, -n, 28_600, 30_500);
