@@ -387,7 +387,7 @@ public final class Stitcher {
                                 && hint.simplified && probe != null))) {
                             exactPixels++;
                         } else {
-                            r = searched(view, r);
+                            r = searched(view, r, belowHorizontal);
                         }
                     }
                 }
@@ -422,7 +422,7 @@ public final class Stitcher {
          * none of the triangles seen around it ({@code r} NaN): its distance on the full-resolution surface where
          * the probe finds it, else as the hint says (sky, or NaN: left to the views' interpolation). Counts it.
          */
-        private double searched(int view, double r) {
+        private double searched(int view, double r, double belowHorizontal) {
             double dx = ray[0], dy = ray[1], dz = ray[2];
             if (!Double.isNaN(r)) {
                 // Seen at grazing incidence, a simplified patch's sag of centimetres is metres of
@@ -450,8 +450,12 @@ public final class Stitcher {
             }
             if (probe != null) {
                 double to = 2 * hint.farthestCornerMetres + 500;
+                // From just nearer than the nearest terrain the samples around saw, or than the pixel below's hit (the
+                // ray met none of the triangles seen around it, so the candidates' corners bound nothing: a sliver of
+                // terrain between the samples, 53 m off beside the triangles' corners at 69 m, was searched past).
                 r = probe.firstHitMetres(dx, dy, dz,
-                        Math.max(0.9 * hint.nearestCornerMetres, NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p)),
+                        Math.max(NEAREST_SEEN_SHARE * nearestSeenMetres(inverseEyeDepth, view, layout, p),
+                                belowBoundMetres(belowHorizontal)),
                         to);
                 if (Double.isNaN(r) && hint.skyInCentre) {
                     // Above the terrain out to there, with sky beside it: a horizon's ray, which may meet the surface
@@ -585,8 +589,8 @@ public final class Stitcher {
         final int[] candidates = new int[16];
         /** When NaN is returned: whether sky is seen among the central 2×2 samples. */
         boolean skyInCentre;
-        /** When NaN is returned: distances to the nearest and the farthest candidate's first corner, metres. */
-        double nearestCornerMetres, farthestCornerMetres;
+        /** When NaN is returned: distance to the farthest candidate's first corner, metres. */
+        double farthestCornerMetres;
         /** When a distance is returned: whether the triangle met is a simplified patch's ({@link SeenTriangles#simplified()}). */
         boolean simplified;
         /** When a distance is returned: the sine of the incidence on the triangle met if simplified (only then asked), else 1. */
@@ -682,20 +686,16 @@ public final class Stitcher {
             hint.nearestCandidateMetres = Math.sqrt(nearestSq);
             return best;
         }
-        double nearestCorner = Double.POSITIVE_INFINITY, farthestCorner = 0;
+        double farthestCorner = 0;
         for (int k = 0; k < n; k++) {
             double d = seen.cornerDistanceMetres(candidates[k]);
-            // (Comparisons, not Math.min/max, which the client compiler calls: a corner's distance is a square
-            // root of a sum of squares, never NaN or −0, where the two agree.)
-            if (d < nearestCorner) {
-                nearestCorner = d;
-            }
+            // (A comparison, not Math.max, which the client compiler calls: a corner's distance is a square root of a
+            // sum of squares, never NaN or −0, where the two agree.)
             if (d > farthestCorner) {
                 farthestCorner = d;
             }
         }
         hint.skyInCentre = skyInCentre;
-        hint.nearestCornerMetres = nearestCorner;
         hint.farthestCornerMetres = farthestCorner;
         return Double.NaN;
     }
