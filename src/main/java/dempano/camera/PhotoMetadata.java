@@ -613,7 +613,9 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
         if (!Double.isFinite(v)) {
             return Double.toString(v);
         }
-        return new java.math.BigDecimal(String.format(Locale.ROOT, "%.9g", v)).stripTrailingZeros().toPlainString();
+        java.math.BigDecimal d = new java.math.BigDecimal(String.format(Locale.ROOT, "%.9g", v)).stripTrailingZeros();
+        // Plain digits where they are readable; 1.71887339E+304 rather than 305 digits.
+        return Math.abs(v) < 1e12 && (v == 0 || Math.abs(v) >= 1e-6) ? d.toPlainString() : d.toString();
     }
 
     /** How far the camera at the GPS altitude (its own: height 0 unless a flag gives one) is below the ground; NaN: unknown. */

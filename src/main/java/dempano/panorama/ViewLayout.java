@@ -27,6 +27,17 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
     public static final double MAX_CAMERA_TILT_DEG = 75;
     /** How the message of a camera too wide for {@link #forTarget} begins (callers add where the field of view came from). */
     public static final String TOO_WIDE = "field of view too wide for perspective views";
+    /**
+     * How the message of a camera whose pixels are too fine for {@link #forTarget} begins (callers add where the field
+     * of view came from).
+     */
+    public static final String TOO_NARROW = "field of view too narrow for single-precision views";
+    /**
+     * Finest pixel a camera may have, radians (0.02″; a focal length of 10⁷ pixels, 40 m behind 4 µm pixels): the views
+     * hold directions and vertices in single precision (a part in 1.7·10⁷), and with pixels of 6·10⁻⁹ rad terrain 4 m
+     * off was drawn as sky in 3 903 of 60 000 pixels; 3·10⁻⁸ rad still matched the CPU reference.
+     */
+    public static final double FINEST_PIXEL_RAD = 1e-7;
     /** View pixels of margin around a camera's rays, for the resampler's 4×4 neighbourhoods. */
     public static final int CAMERA_MARGIN_PX = 2;
 
@@ -158,6 +169,11 @@ public record ViewLayout(int views, int widthPx, int heightPx, double topTan, do
         }
         double[] centre = t.rayOf((w - 1) / 2.0, (h - 1) / 2.0);
         double[] below = t.rayOf((w - 1) / 2.0, (h - 1) / 2.0 + 1);
+        if (finestRad < FINEST_PIXEL_RAD && !rays.isEmpty()) {
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                    TOO_NARROW + ": a pixel spans %.2g rad (%.2g″), at least %.0g rad (%.2f″) is needed", finestRad,
+                    Math.toDegrees(finestRad) * 3600, FINEST_PIXEL_RAD, Math.toDegrees(FINEST_PIXEL_RAD) * 3600));
+        }
         if (rays.isEmpty() || Double.isNaN(centre[0]) || Double.isNaN(below[0]) || !(finestRad > 0)) {
             throw new IllegalArgumentException("the target image has no rays at its centre: " + t);
         }

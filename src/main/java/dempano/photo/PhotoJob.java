@@ -553,18 +553,20 @@ public final class PhotoJob {
     }
 
     /**
-     * A field of view too wide to render, with where it came from (the intrinsics' line of the provenance: an EXIF
+     * A field of view too wide (or too narrow) to render, with where it came from (the intrinsics' line of the provenance: an EXIF
      * FocalLengthIn35mmFilm of 1 or 2 mm is a broken tag or a fisheye) and the flag that sets it instead; any other
      * error as it is.
      */
     static IllegalArgumentException tooWideSaysWhy(IllegalArgumentException e, PhotoCamera camera) {
-        if (e.getMessage() == null || !e.getMessage().startsWith(dempano.panorama.ViewLayout.TOO_WIDE)) {
+        boolean narrow = e.getMessage() != null && e.getMessage().startsWith(dempano.panorama.ViewLayout.TOO_NARROW);
+        if (e.getMessage() == null || !(narrow || e.getMessage().startsWith(dempano.panorama.ViewLayout.TOO_WIDE))) {
             return e;
         }
         String source = camera.provenance().stream().filter(l -> l.startsWith("focal length ")).findFirst()
                 .map(l -> l.replaceFirst(" \\(.*", "")).orElse(null);
         if (source != null && source.contains(PhotoOverrides.HFOV)) { // the flag itself: asking for it again says nothing
-            return new IllegalArgumentException(e.getMessage() + "; the " + source + ": give a narrower " + PhotoOverrides.HFOV, e);
+            return new IllegalArgumentException(e.getMessage() + "; the " + source + ": give a " + (narrow ? "wider " : "narrower ")
+                    + PhotoOverrides.HFOV, e);
         }
         return new IllegalArgumentException(e.getMessage() + (source == null ? "" : "; the " + source) + ": give "
                 + PhotoOverrides.HFOV + " (a pinhole camera's horizontal field of view) or a calibration", e);

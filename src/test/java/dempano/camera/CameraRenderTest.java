@@ -58,7 +58,9 @@ class CameraRenderTest {
             "level pinhole, 480, 320, 50, 0, 0, 0, 0, 0, 0, 100",
             "barrel k1 -0.25 rolled 20° pitched -8°, 480, 320, 70, -0.25, 0.05, 20, -8, 0, 0, 100",
             "pincushion k1 0.1 principal point off centre, 400, 300, 40, 0.1, 0, -30, 3, 37, -21, 2000",
-            "pitched -30° rolled 30° tangential, 360, 360, 60, -0.05, 0, 30, -30, 0, 0, 300"})
+            "pitched -30° rolled 30° tangential, 360, 360, 60, -0.05, 0, 30, -30, 0, 0, 300",
+            // Pixels of 1.45e-7 rad, a little coarser than the finest accepted (ViewLayout.FINEST_PIXEL_RAD), on sea 5 m off.
+            "telephoto of the finest pixels pitched -40°, 300, 200, 0.0025, 0, 0, 0, -40, 0, 0, 3"})
     void aSeaViewMatchesTheEllipsoidOnEveryPixel(String name, int w, int h, double hfovDeg, double k1, double p1,
                                                  double rollDeg, double pitchDeg, double cxShiftPx, double cyShiftPx,
                                                  double eyeMetres) {

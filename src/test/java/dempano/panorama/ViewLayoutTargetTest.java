@@ -126,4 +126,22 @@ class ViewLayoutTargetTest {
         ViewLayout.checkCoverable(photo, 1);
         ViewLayout.forTarget(photo, 1);
     }
+
+    /**
+     * Pixels finer than single-precision views resolve (10⁻⁷ rad) are refused with that reason (a 300-pixel view 10⁻⁴°
+     * wide drew terrain 4 m off as sky; a focal length of 10³⁰⁰ pixels was said to have no rays at its centre); a
+     * 2 000 mm lens behind 4 µm pixels (2·10⁻⁶ rad) and the finest accepted are laid out.
+     */
+    @Test
+    void pixelsTooFineForSinglePrecisionViewsAreRefusedWithTheirReason() {
+        CameraOrientation level = new CameraOrientation(0, -40, 0);
+        for (CameraIntrinsics k : new CameraIntrinsics[] {CameraIntrinsics.fromHorizontalFov(300, 200, 1e-4),
+                CameraIntrinsics.pinhole(300, 200, 1e300), CameraIntrinsics.pinhole(300, 200, 1.01e7)}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> ViewLayout.forTarget(new CameraView(k, level), 1));
+            assertTrue(e.getMessage().startsWith(ViewLayout.TOO_NARROW), e.getMessage());
+        }
+        ViewLayout.forTarget(new CameraView(CameraIntrinsics.fromFocalLength(6000, 4000, 2000, 0.004 * 6000), level), 1);
+        ViewLayout.forTarget(new CameraView(CameraIntrinsics.pinhole(300, 200, 0.99e7), level), 1);
+    }
 }
