@@ -31,6 +31,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.function.Consumer;
 
 /**
@@ -171,6 +172,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      * views and supersampling do not apply. Slower than a GPU, exact to micrometres.
      */
     public static PanoramaRenderer openReference(DemSource dem) {
+        Objects.requireNonNull(dem, "dem");
         return new PanoramaRenderer(dem, null);
     }
 
@@ -180,6 +182,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws dempano.render.GlUnavailableException when no OpenGL context can be had (message says why)
      */
     public static PanoramaRenderer open(DemSource dem) {
+        Objects.requireNonNull(dem, "dem"); // before the context is made
         return new PanoramaRenderer(dem, java.util.concurrent.CompletableFuture.completedFuture(OffscreenRenderer.acquire()));
     }
 
@@ -191,6 +194,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      * for the context and ends it.
      */
     public static PanoramaRenderer openInBackground(DemSource dem) {
+        Objects.requireNonNull(dem, "dem");
         java.util.concurrent.CompletableFuture<OffscreenRenderer.Handle> pending = new java.util.concurrent.CompletableFuture<>();
         Thread starter = new Thread(() -> {
             try {
@@ -227,9 +231,14 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws IllegalArgumentException      for a viewpoint without DEM data
      * @throws InsufficientMemoryException   before rendering, when the request needs more heap than the JVM may use
      * @throws dempano.render.RenderFailedException when the GL thread fails (the renderer is then closed)
-     * @throws IllegalStateException         when this renderer was closed
+     * @throws IllegalStateException         when this renderer was closed; a
+     *                                       {@link java.util.concurrent.CancellationException} when the calling thread
+     *                                       was interrupted (its interrupt flag is set again)
+     * @throws NullPointerException          naming a null argument
      */
     public Panorama render(PanoramaRequest req, Consumer<String> progress) {
+        Objects.requireNonNull(req, "request");
+        Objects.requireNonNull(progress, "progress");
         checkOpen();
         Stopwatch clock = new Stopwatch();
         progress.accept("loading tiles");
@@ -273,6 +282,8 @@ public final class PanoramaRenderer implements AutoCloseable {
      *                                  perspective views
      */
     public CameraImage render(CameraRequest request, Consumer<String> progress) {
+        Objects.requireNonNull(request, "request");
+        Objects.requireNonNull(progress, "progress");
         checkOpen();
         PanoramaRequest req = request.settings();
         CameraView view = request.view();
@@ -347,6 +358,7 @@ public final class PanoramaRenderer implements AutoCloseable {
      * @throws IllegalArgumentException as a render there would for missing tiles its policy refuses
      */
     public double groundElevationMetres(PanoramaRequest at) {
+        Objects.requireNonNull(at, "at");
         return tiles(at, new Stopwatch()).heightAt(at.latDeg(), at.lonDeg());
     }
 
@@ -569,8 +581,19 @@ public final class PanoramaRenderer implements AutoCloseable {
             return queue.take();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while rendering", e);
+            throw interrupted("rendering", e);
         }
+    }
+
+    /**
+     * What an interrupt of the rendering thread ends a render with: a {@link java.util.concurrent.CancellationException}
+     * (an IllegalStateException, as before, that a caller can tell from a closed renderer's), the thread's interrupt
+     * flag set again.
+     */
+    static java.util.concurrent.CancellationException interrupted(String what, InterruptedException cause) {
+        java.util.concurrent.CancellationException e = new java.util.concurrent.CancellationException("interrupted while " + what);
+        e.initCause(cause);
+        return e;
     }
 
     /** Waits for the drawing and throws what it threw, as it threw it. */

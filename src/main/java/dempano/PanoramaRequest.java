@@ -106,9 +106,9 @@ public record PanoramaRequest(Standpoint standpoint, Coverage coverage, ViewSett
                 throw new IllegalArgumentException("range must be between 0.1 and " + TileSelection.MAX_RANGE_METRES / 1000
                         + " km, got " + rangeMetres / 1000 + " km");
             }
-            Objects.requireNonNull(elevationRange);
-            Objects.requireNonNull(refraction);
-            Objects.requireNonNull(missingTiles);
+            Objects.requireNonNull(elevationRange, "elevationRange");
+            Objects.requireNonNull(refraction, "refraction");
+            Objects.requireNonNull(missingTiles, "missingTiles");
         }
     }
 
@@ -129,7 +129,7 @@ public record PanoramaRequest(Standpoint standpoint, Coverage coverage, ViewSett
                 ViewLayout.DEFAULT_VIEWS, LevelOfDetail.DEFAULT_MAX_ERROR_PX);
 
         public ViewSettings {
-            Objects.requireNonNull(depthMode);
+            Objects.requireNonNull(depthMode, "depthMode");
             if (!(lodErrorPx >= 0 && lodErrorPx <= 100)) {
                 throw new IllegalArgumentException("level-of-detail error bound must be in [0, 100] pixels, got " + lodErrorPx);
             }
@@ -155,7 +155,7 @@ public record PanoramaRequest(Standpoint standpoint, Coverage coverage, ViewSett
         public static final Products DEFAULT = new Products(true, true, true, EnumSet.noneOf(Layer.class));
 
         public Products {
-            layers = Set.copyOf(layers);
+            layers = Set.copyOf(Objects.requireNonNull(layers, "layers"));
             if (!colour && !distance) {
                 throw new IllegalArgumentException("nothing to render: both colour and distance are switched off");
             }

@@ -163,4 +163,28 @@ class PanoramaRequestTest {
         });
         assertTrue(message == null || e.getMessage().contains(message), e.getMessage());
     }
+
+    /** A null argument is refused by its name (they were bare NullPointerExceptions), a renderer's before any context is made. */
+    @Test
+    void nullArgumentsAreRefusedByName() {
+        PanoramaRequest r = PanoramaRequest.at(46.43, 8.09);
+        Map<String, org.junit.jupiter.api.function.Executable> calls = new LinkedHashMap<>();
+        calls.put("elevationRange", () -> r.withElevationRange(null));
+        calls.put("refraction", () -> r.withRefraction(null));
+        calls.put("missingTiles", () -> r.withMissingTiles(null));
+        calls.put("depthMode", () -> r.withDepthMode(null));
+        calls.put("layers", () -> r.withLayers(null));
+        calls.put("standpoint", () -> r.withStandpoint(null));
+        calls.put("dem", () -> PanoramaRenderer.open(null));
+        calls.put("dem ", () -> PanoramaRenderer.openReference(null));
+        calls.put("request", () -> {
+            try (PanoramaRenderer cpu = PanoramaRenderer.openReference(new dempano.dem.InMemoryDem("none", java.util.List.of()))) {
+                cpu.render((PanoramaRequest) null);
+            }
+        });
+        calls.forEach((name, call) -> {
+            NullPointerException e = assertThrows(NullPointerException.class, call, name);
+            assertEquals(name.trim(), e.getMessage());
+        });
+    }
 }

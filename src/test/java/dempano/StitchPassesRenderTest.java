@@ -91,7 +91,8 @@ class StitchPassesRenderTest {
                 .withElevationRange(new ElevationRange(-20, 10, false));
         Panorama again, fresh;
         try (PanoramaRenderer r = PanoramaRenderer.open(dem).withoutMeshCache()) {
-            IllegalStateException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class,
+            // A CancellationException: an IllegalStateException, as it was, that a caller can tell from a closed renderer's.
+            IllegalStateException e = org.junit.jupiter.api.Assertions.assertThrows(java.util.concurrent.CancellationException.class,
                     () -> r.render(request, line -> {
                         if (line.startsWith("rendering")) {
                             Thread.currentThread().interrupt(); // as a caller's cancel would, while drawing starts

@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.stream.Collectors;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVPrinter;
+import dempano.io.IoMessages;
 
 /**
  * {@code results.csv} of a batch: header {@code id,status,files,seconds,error}, one line per row
@@ -25,10 +26,15 @@ final class ResultsCsv implements AutoCloseable {
     static final String[] HEADER = {"id", "status", "files", "seconds", "error"};
     private final CSVPrinter printer;
     private final Path directory;
+    private final Path file;
+    /** The file's identity (device and inode where the file system has them) when created; null where it has none. */
+    private final Object fileKey;
 
-    private ResultsCsv(CSVPrinter printer, Path directory) {
+    private ResultsCsv(CSVPrinter printer, Path file, Object fileKey) {
         this.printer = printer;
-        this.directory = directory;
+        this.file = file;
+        this.directory = file.toAbsolutePath().getParent();
+        this.fileKey = fileKey;
     }
 
     /**
@@ -56,12 +62,33 @@ final class ResultsCsv implements AutoCloseable {
         BufferedWriter w = new BufferedWriter(java.nio.channels.Channels.newWriter(channel, StandardCharsets.UTF_8));
         CSVPrinter p = new CSVPrinter(w, CSVFormat.DEFAULT.builder().setHeader(HEADER).get());
         p.flush();
-        Path dir = file.toAbsolutePath().getParent();
-        return new ResultsCsv(p, dir);
+        return new ResultsCsv(p, file, Files.readAttributes(file, java.nio.file.attribute.BasicFileAttributes.class).fileKey());
     }
 
-    /** Appends a row's line and flushes it to the file. */
+    /**
+     * Throws when the file written is no longer at its path: removed, or replaced (its folder deleted or renamed during
+     * the run). Lines written after that would go to a file nobody can open, and the batch would end as if all were
+     * well.
+     */
+    private void checkStillThere() throws IOException {
+        Object now;
+        try {
+            now = Files.readAttributes(file, java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+        } catch (IOException e) {
+            throw new IOException("it is gone (its folder deleted or renamed during the run?): " + IoMessages.reason(e), e);
+        }
+        if (fileKey != null && !fileKey.equals(now)) {
+            throw new IOException("it was replaced by another file during the run");
+        }
+    }
+
+    /**
+     * Appends a row's line and flushes it to the file.
+     *
+     * @throws IOException also when the file is no longer at its path (removed or replaced during the run)
+     */
     synchronized void append(BatchResult r) throws IOException {
+        checkStillThere();
         String files = r.files().stream().map(f -> relative(f)).collect(Collectors.joining(" "));
         printer.printRecord(BatchIds.printable(r.id()), // control characters (a NUL in a refused id) as ?
                 r.status().word(), files, String.format(Locale.ROOT, "%.3f", r.seconds()),

@@ -347,7 +347,9 @@ public final class OffscreenRenderer {
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while " + what, e);
+            java.util.concurrent.CancellationException c = new java.util.concurrent.CancellationException("interrupted while " + what);
+            c.initCause(e); // (an IllegalStateException, as before, that a caller can tell from a closed renderer's)
+            throw c;
         } catch (ExecutionException e) {
             throw new IllegalStateException(what + " failed: " + e.getCause(), e.getCause());
         }

@@ -2,6 +2,7 @@ package dempano.batch;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -68,6 +69,32 @@ class BatchRunTest {
     static boolean stagingLeftovers(Path dir) throws IOException {
         try (Stream<Path> s = Files.list(dir)) {
             return s.anyMatch(p -> p.getFileName().toString().startsWith("."));
+        }
+    }
+
+    /**
+     * An output folder deleted during the run ends it with an IOException naming results.csv (its lines went on into the
+     * deleted file and the run returned as if all were well).
+     */
+    @Test
+    void anOutputFolderDeletedDuringTheRunIsAnIOException(@TempDir Path tmp) throws IOException {
+        Path out = Files.createDirectory(tmp.resolve("batch"));
+        List<BatchRow> rows = List.of(BatchRow.invalid(2, "a", "line 2: bad"), BatchRow.invalid(3, "b", "line 3: bad"));
+        try (PanoramaRenderer r = PanoramaRenderer.openReference(dem)) {
+            IOException e = assertThrows(IOException.class, () -> new BatchRenderer(r, out, PanoramaWriter.Options.DEFAULT)
+                    .render(rows, new BatchListener() {
+                        @Override
+                        public void rowFinished(BatchResult result, int index) {
+                            try (Stream<Path> files = Files.walk(out)) {
+                                for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                                    Files.delete(f);
+                                }
+                            } catch (IOException x) {
+                                throw new java.io.UncheckedIOException(x);
+                            }
+                        }
+                    }));
+            assertTrue(e.getMessage().contains("results.csv") && e.getMessage().contains("gone"), e.getMessage());
         }
     }
 
