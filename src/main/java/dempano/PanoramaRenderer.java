@@ -352,8 +352,8 @@ public final class PanoramaRenderer implements AutoCloseable {
     }
 
     /**
-     * The DEM's surface at the request's coordinate, metres above sea level (bilinear, the surface a viewpoint stands
-     * on), from the tiles a render there loads (kept for it); NaN in a void or on a missing tile.
+     * The DEM's surface at the request's coordinate, metres above sea level (the drawn surface a viewpoint stands on,
+     * {@link Mosaic#heightAt}), from the tiles a render there loads (kept for it); NaN in a void or on a missing tile.
      *
      * @throws IllegalArgumentException as a render there would for missing tiles its policy refuses
      */
@@ -776,19 +776,9 @@ public final class PanoramaRenderer implements AutoCloseable {
      */
     static double safeNearMetres(double requested, Mosaic mosaic, Viewpoint eye, ViewLayout layout) {
         double r = mosaic.rowOf(eye.latDeg()), c = mosaic.colOf(eye.lonDeg());
-        // The eye's clearance over the surface drawn (the triangle under it), not only over the DEM's bilinear
-        // height, which the eye height is counted from: on a steep cell the drawn surface can be a metre higher (at
-        // Eggishorn 1.1 m, leaving 0.9 m of the 2), and a 1 m near plane then cut the slope away under the eye
-        // (3.4 % of the pixels 5 % off the CPU reference, looking through the ground).
+        // The eye's clearance over the surface drawn (the triangle under it, Mosaic.heightAt, which the eye height is
+        // counted from).
         double clearance = eye.eyeAltitudeMetres() - eye.groundElevationMetres();
-        int r0 = (int) Math.floor(r), c0 = (int) Math.floor(c);
-        if (r0 >= 0 && c0 >= 0 && r0 + 1 < mosaic.rows() && c0 + 1 < mosaic.cols()) {
-            double drawn = dempano.terrain.Triangulation.heightIn(r0, c0, mosaic.sample(r0, c0), mosaic.sample(r0, c0 + 1),
-                    mosaic.sample(r0 + 1, c0), mosaic.sample(r0 + 1, c0 + 1), r - r0, c - c0);
-            if (!Double.isNaN(drawn)) {
-                clearance = Math.min(clearance, eye.eyeAltitudeMetres() - drawn);
-            }
-        }
         double dy = 6_371_000.0 * Math.toRadians(1.0 / mosaic.intervalsPerDegree());
         double dx = dy * Math.cos(Math.toRadians(eye.latDeg()));
         double maxGradient = 0;

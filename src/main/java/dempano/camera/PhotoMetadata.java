@@ -567,7 +567,7 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
 
     /**
      * As {@link #resolve(PhotoOverrides)}, knowing the DEM's surface at the photo's position: an EXIF GPSAltitude that
-     * puts the camera more than {@link Viewpoint#BELOW_GROUND_TOLERANCE_METRES} below it is wrong (GPS altitudes are
+     * puts the camera below it, or less than {@link Viewpoint#MIN_EYE_CLEARANCE_METRES} above it, is wrong (GPS altitudes are
      * often tens of metres off), so it is not used and the camera stands on the DEM (offset 0, the default camera
      * height), with a provenance line saying why. An altitude given by flag is the user's, and is not second-guessed
      * (a viewpoint below the surface is refused when rendered).
@@ -658,10 +658,12 @@ public record PhotoMetadata(String source, int widthPx, int heightPx, int orient
             offset = o.offsetMetres();
             provenance.add("standing on the DEM" + (offset == 0 ? "" : " corrected by " + num(offset) + " m")
                     + " (" + (estimated.contains(PhotoOverrides.OFFSET) ? ESTIMATED : PhotoOverrides.OFFSET) + ")");
-        } else if (given(gpsAltitudeMetres()) && gpsEyeBelowMetres(o, demGroundMetres) > Viewpoint.BELOW_GROUND_TOLERANCE_METRES) {
-            provenance.add(String.format(Locale.ROOT, "camera altitude %s m from EXIF GPSAltitude not used: %.1f m below"
+        } else if (given(gpsAltitudeMetres()) && gpsEyeBelowMetres(o, demGroundMetres) > -Viewpoint.MIN_EYE_CLEARANCE_METRES) {
+            double below = gpsEyeBelowMetres(o, demGroundMetres);
+            provenance.add(String.format(Locale.ROOT, "camera altitude %s m from EXIF GPSAltitude not used: %s"
                     + " the DEM surface (%.1f m); standing on the DEM instead (%s 0; %s gives an altitude)",
-                    num(gpsAltitudeMetres()), gpsEyeBelowMetres(o, demGroundMetres), demGroundMetres, PhotoOverrides.OFFSET,
+                    num(gpsAltitudeMetres()), below > 0 ? String.format(Locale.ROOT, "%.1f m below", below)
+                            : String.format(Locale.ROOT, "only %.2f m above", -below), demGroundMetres, PhotoOverrides.OFFSET,
                     PhotoOverrides.ALTITUDE));
         } else if (given(gpsAltitudeMetres())) {
             altitude = gpsAltitudeMetres();

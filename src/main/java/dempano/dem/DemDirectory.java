@@ -43,6 +43,8 @@ public final class DemDirectory implements DemSource {
     private final List<String> warnings;
     private final Map<TileId, Cached> cache;
     private final VoidFill voidFill;
+    /** Per tile: files (relative to the folder) whose names begin with its name but are not read as tiles. */
+    private final Map<TileId, List<String>> unreadNamedFor;
 
     /** A loaded tile and the file's state when it was read: a changed file is read again. */
     private record Cached(HgtTile tile, Object stamp) {
@@ -80,22 +82,40 @@ public final class DemDirectory implements DemSource {
         }
         this.directory = directory;
         Map<TileId, List<Candidate>> index = new TreeMap<>();
+        Map<TileId, List<String>> unread = new TreeMap<>();
         List<String> junk = new ArrayList<>();
+        List<Path> entries = new ArrayList<>();
         try (Stream<Path> list = Files.list(directory)) {
             for (Path p : (Iterable<Path>) list.sorted()::iterator) {
-                String name = p.getFileName().toString();
-                if (!TileId.looksLikeTileFile(name)) {
-                    continue; // README, SHA256SUMS, ...
+                if (LATITUDE_FOLDER.matcher(p.getFileName().toString()).matches() && Files.isDirectory(p)) {
+                    // AWS Terrain Tiles' "skadi" layout: N46/N46E008.hgt.gz, a folder per latitude.
+                    try (Stream<Path> inner = Files.list(p)) {
+                        inner.sorted().forEach(entries::add);
+                    }
+                } else {
+                    entries.add(p);
                 }
-                if (!TileId.isTileFileName(name)) {
-                    junk.add(name);
-                    continue;
-                }
-                index.computeIfAbsent(TileId.parseFileName(name), k -> new ArrayList<>()).add(new Candidate(p, problem(p)));
             }
         } catch (IOException | java.io.UncheckedIOException e) {
             throw new DemException("cannot list DEM directory " + directory + ": " + e, e);
         }
+        for (Path p : entries) {
+            String name = p.getFileName().toString();
+            boolean tileName = TileId.isTileFileName(name);
+            TileId namedFor = tileName ? null : TileId.namedAtStart(name);
+            if (namedFor != null) { // N46E008.hgt.bak: a hint should N46E008 be missing
+                unread.computeIfAbsent(namedFor, k -> new ArrayList<>()).add(directory.relativize(p).toString());
+            }
+            if (!TileId.looksLikeTileFile(name)) {
+                continue; // README, SHA256SUMS, ...
+            }
+            if (!tileName) {
+                junk.add(name);
+                continue;
+            }
+            index.computeIfAbsent(TileId.parseFileName(name), k -> new ArrayList<>()).add(new Candidate(p, problem(p)));
+        }
+        this.unreadNamedFor = Collections.unmodifiableMap(unread);
         Map<TileId, Path> usable = new TreeMap<>();
         index.forEach((id, c) -> {
             if (c.size() == 1 && c.get(0).problem() == null) {
@@ -242,4 +262,18 @@ public final class DemDirectory implements DemSource {
     public String describe() {
         return directory.toString();
     }
+
+    @Override
+    public List<String> unreadFilesNamedFor(TileId id) {
+        List<String> names = unreadNamedFor.getOrDefault(id, List.of());
+        List<String> paths = new ArrayList<>(names.size());
+        for (String n : names) {
+            paths.add(directory.resolve(n).toString());
+        }
+        return paths;
+    }
+
+    /** A folder per latitude, as AWS Terrain Tiles' "skadi" layout has them ({@code N46}, {@code S16}). */
+    private static final java.util.regex.Pattern LATITUDE_FOLDER = java.util.regex.Pattern.compile("^[NS]\\d{2}$",
+            java.util.regex.Pattern.CASE_INSENSITIVE);
 }

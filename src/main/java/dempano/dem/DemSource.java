@@ -16,4 +16,12 @@ public interface DemSource {
 
     /** A short description for messages and metadata (e.g. the directory). */
     String describe();
+
+    /**
+     * Files this source holds whose names begin with the tile's name but are not read as tiles ({@code N46E008.hgt.bak},
+     * {@code N46E008.dem}), as paths for a hint where the tile is missing; none by default.
+     */
+    default java.util.List<String> unreadFilesNamedFor(TileId id) {
+        return java.util.List.of();
+    }
 }

@@ -14,7 +14,7 @@ import java.util.zip.ZipFile;
 /**
  * Reads SRTM {@code .hgt} tiles: big-endian int16 heights in metres, row 0 the northern edge,
  * -32768 for voids; 1201² samples (SRTM3) or 3601² (SRTM1), told apart by the length. Also
- * {@code .hgt.zip} holding one {@code .hgt}. The tile's position comes from the file name.
+ * {@code .hgt.zip} holding one {@code .hgt}, or a {@code .hgt.gz}. The tile's position comes from the file name.
  */
 public final class HgtReader {
     /** The void marker in SRTM files. */
@@ -44,7 +44,8 @@ public final class HgtReader {
         TileId id = TileId.parseFileName(fileName);
         byte[] bytes;
         try {
-            bytes = fileName.toLowerCase(java.util.Locale.ROOT).endsWith(".zip") ? unzip(file, id) : Files.readAllBytes(file);
+            String lower = fileName.toLowerCase(java.util.Locale.ROOT);
+            bytes = lower.endsWith(".zip") ? unzip(file, id) : lower.endsWith(".gz") ? gunzip(file) : Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             throw new DemException(file + ": no such file", e);
         } catch (ZipException e) {
@@ -112,6 +113,26 @@ public final class HgtReader {
         throw new DemException(source + ": " + length + " bytes is not an SRTM tile (expected "
                 + 2L * HgtTile.SRTM3_SAMPLES * HgtTile.SRTM3_SAMPLES + " for SRTM3 or "
                 + 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES + " for SRTM1; truncated or not a .hgt?)");
+    }
+
+    /**
+     * A gzipped {@code .hgt} (as AWS Terrain Tiles serve them). Read at most an SRTM1 tile's bytes and one more, so a
+     * gzip bomb cannot exhaust memory; read to its end, the stream checks its CRC-32 and length.
+     */
+    private static byte[] gunzip(Path file) throws IOException {
+        long max = 2L * HgtTile.SRTM1_SAMPLES * HgtTile.SRTM1_SAMPLES;
+        byte[] bytes;
+        try (InputStream in = new java.util.zip.GZIPInputStream(Files.newInputStream(file), 1 << 16)) {
+            bytes = in.readNBytes((int) max + 1);
+            if (bytes.length > max) {
+                throw new DemException(file + ": inflates to more than an SRTM1 tile's " + max
+                        + " bytes (not a gzipped .hgt, or a corrupt file)");
+            }
+        } catch (ZipException | java.io.EOFException e) {
+            throw new DemException(file + " is not a gzip file, or a corrupt or truncated one (" + e.getMessage()
+                    + "); fetch the tile again", e);
+        }
+        return bytes;
     }
 
     /** Zip compression methods Java's zip reader does not read, by name (APPNOTE 4.4.5). */

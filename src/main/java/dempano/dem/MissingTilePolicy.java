@@ -45,10 +45,12 @@ public enum MissingTilePolicy {
         String where = mosaic.sourceDescription();
         // Tiles there but without one valid sample count as missing: say so, not that they are absent.
         List<String> allVoid = mosaic.warnings().stream().filter(w -> w.contains(ENTIRELY_VOID)).toList();
+        String unread = mosaic.warnings().stream().filter(w -> w.contains(Mosaic.NOT_READ)).map(w -> "; " + w)
+                .findFirst().orElse("");
         if (mosaic.tilesUsed().isEmpty()) {
             throw new DemException("no DEM data around " + latDeg + ", " + lonDeg + ": none of the tiles needed within range "
                     + mosaic.tilesMissing() + (allVoid.isEmpty() ? " is in " + where + " (wrong DEM folder, or open sea?)"
-                    : " has data in " + where + " (" + String.join("; ", allVoid) + ")")
+                    : " has data in " + where + " (" + String.join("; ", allVoid) + ")") + unread
                     + "; add the tiles, or give --missing-tiles sea to render sea level");
         }
         if (Double.isNaN(altitudeMetres)) {
@@ -56,7 +58,7 @@ public enum MissingTilePolicy {
             if (mosaic.tilesMissing().containsAll(under)) {
                 throw new DemException("tile " + (under.size() == 1 ? under.get(0) : under.toString())
                         + " under the viewpoint " + latDeg + ", " + lonDeg + (allVoid.isEmpty() ? " is not in " + where
-                        : " has no data in " + where + " (" + String.join("; ", allVoid) + ")")
+                        : " has no data in " + where + " (" + String.join("; ", allVoid) + ")") + unread
                         + ": the eye would stand on sea level (0 m); add the tile, give the eye's altitude with "
                         + "--altitude-m, or --missing-tiles sea if the viewpoint is at sea");
             }

@@ -322,6 +322,15 @@ public final class PriorityDem implements DemSource {
     }
 
     @Override
+    public List<String> unreadFilesNamedFor(TileId id) {
+        List<String> all = new ArrayList<>();
+        for (DemSource s : sources) {
+            all.addAll(s.unreadFilesNamedFor(id));
+        }
+        return all;
+    }
+
+    @Override
     public String describe() {
         StringBuilder b = new StringBuilder();
         for (DemSource s : sources) {

@@ -13,16 +13,16 @@ import java.util.regex.Pattern;
  */
 public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<TileId> {
     // A name such as N46E008, optionally followed by a suffix (N19W155v2.3a) as GDAL accepts,
-    // then .hgt or .hgt.zip.
+    // then .hgt, .hgt.zip or .hgt.gz (the gzip of AWS Terrain Tiles' "skadi" layout).
     private static final Pattern FILE_NAME =
-            Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.hgt(\\.zip)?$", Pattern.CASE_INSENSITIVE);
+            Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.hgt(\\.zip|\\.gz)?$", Pattern.CASE_INSENSITIVE);
     // GeoTIFF tiles: N46E008.tif (as gdal_translate output is usually named, suffix allowed) and the
     // Copernicus DEM naming, Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif (GLO-30; _30_ for GLO-90).
     private static final Pattern TIFF_NAME =
             Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})([^/\\\\]*?)\\.tiff?$", Pattern.CASE_INSENSITIVE);
     private static final Pattern COPERNICUS_NAME = Pattern.compile(
             "^Copernicus_DSM(?:_COG)?_\\d+_([NS])(\\d{2})_00_([EW])(\\d{3})_00_DEM\\.tiff?$", Pattern.CASE_INSENSITIVE);
-    private static final String EXPECTED = "expected e.g. N46E008.hgt, S16E166.hgt.zip, N19W155v2.3a.hgt.zip, "
+    private static final String EXPECTED = "expected e.g. N46E008.hgt, S16E166.hgt.zip, N19W155v2.3a.hgt.zip, N46E008.hgt.gz, "
             + "N46E008.tif or Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif";
 
     public TileId {
@@ -47,7 +47,7 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
     }
 
     /**
-     * Parses a tile file name ({@code N46E008.hgt}, {@code n46e008.hgt}, {@code N19W155v2.3a.hgt.zip},
+     * Parses a tile file name ({@code N46E008.hgt}, {@code n46e008.hgt}, {@code N19W155v2.3a.hgt.zip}, {@code N46E008.hgt.gz},
      * GeoTIFFs {@code N46E008.tif} and {@code Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif}).
      *
      * @throws DemException if the name is not a tile name
@@ -91,12 +91,31 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
     }
 
     /**
-     * True if a file name ends in {@code .hgt}, {@code .hgt.zip}, {@code .tif} or {@code .tiff}, any case:
-     * meant as a tile, valid or not.
+     * True if a file name ends in {@code .hgt}, {@code .hgt.zip}, {@code .hgt.gz}, {@code .tif} or {@code .tiff}, any
+     * case: meant as a tile, valid or not.
      */
     public static boolean looksLikeTileFile(String fileName) {
         String lower = fileName.toLowerCase(Locale.ROOT);
-        return lower.endsWith(".hgt") || lower.endsWith(".hgt.zip") || isGeoTiffFileName(lower);
+        return lower.endsWith(".hgt") || lower.endsWith(".hgt.zip") || lower.endsWith(".hgt.gz") || isGeoTiffFileName(lower);
+    }
+
+    private static final Pattern NAME_START = Pattern.compile("^([NS])(\\d{2})([EW])(\\d{3})", Pattern.CASE_INSENSITIVE);
+
+    /**
+     * The tile a file's name begins with ({@code N46E008.hgt.bak}, {@code n46e008_old.HGT.tmp}), whatever follows; null
+     * when it begins with none. For hints: a missing tile whose file is there under a name that is not read.
+     */
+    public static TileId namedAtStart(String fileName) {
+        Matcher m = NAME_START.matcher(fileName);
+        if (!m.find()) {
+            return null;
+        }
+        int lat = Integer.parseInt(m.group(2)), lon = Integer.parseInt(m.group(4));
+        boolean south = m.group(1).equalsIgnoreCase("S"), west = m.group(3).equalsIgnoreCase("W");
+        if (lat > (south ? 90 : 89) || lon > (west ? 180 : 179) || (south && lat == 0) || (west && lon == 0)) {
+            return null;
+        }
+        return new TileId(south ? -lat : lat, west ? -lon : lon);
     }
 
     /** True if a file name ends in {@code .tif} or {@code .tiff}, any case. */

@@ -11,7 +11,7 @@ import java.util.Locale;
  *
  * @param latDeg                 latitude, degrees, [-90, 90]
  * @param lonDeg                 longitude, degrees, [-180, 180]
- * @param groundElevationMetres  DEM height at the coordinate (bilinear), metres above sea level
+ * @param groundElevationMetres  DEM height at the coordinate (the drawn surface's, {@link Mosaic#heightAt}), metres above sea level
  * @param offsetMetres           signed correction added to the DEM height; NaN when an absolute altitude was given
  * @param standingAltitudeMetres ground the observer stands on, metres above sea level
  * @param eyeHeightMetres        eye above the standing altitude, metres (≥ 0)
@@ -27,17 +27,29 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
             throw new IllegalArgumentException("bad viewpoint altitude: standing " + standingAltitudeMetres
                     + " m, eye height " + eyeHeightMetres + " m");
         }
-        // An eye inside the terrain would see the landscape through the back of the surface: refuse.
-        if (standingAltitudeMetres + eyeHeightMetres < groundElevationMetres - BELOW_GROUND_TOLERANCE_METRES) {
+        // An eye inside the terrain would see the landscape through the back of the surface, one on it would see the
+        // ground under it at no distance (at 0 m the GL views showed sky or terrain 30 km off where the CPU reference
+        // met the ground at its feet; at 0.01 m 254 pixels looking down were sky): refuse.
+        double eye = standingAltitudeMetres + eyeHeightMetres;
+        if (eye < groundElevationMetres) {
             throw new EyeBelowGroundException(String.format(Locale.ROOT,
                     "the eye (%.1f m) would be %.1f m below the DEM surface (%.1f m) at %.6f, %.6f: raise the offset"
-                            + " or the altitude", standingAltitudeMetres + eyeHeightMetres,
-                    groundElevationMetres - standingAltitudeMetres - eyeHeightMetres, groundElevationMetres, latDeg, lonDeg));
+                            + " or the altitude", eye, groundElevationMetres - eye, groundElevationMetres, latDeg, lonDeg));
+        }
+        if (eye < groundElevationMetres + MIN_EYE_CLEARANCE_METRES) {
+            throw new EyeBelowGroundException(String.format(Locale.ROOT,
+                    "the eye (%.2f m) would be only %.2f m above the DEM surface (%.2f m) at %.6f, %.6f, where the"
+                            + " ground under it cannot be drawn: at least %.1f m is needed; raise the eye height, the"
+                            + " offset or the altitude", eye, eye - groundElevationMetres, groundElevationMetres, latDeg,
+                    lonDeg, MIN_EYE_CLEARANCE_METRES));
         }
     }
 
-    /** How far below the DEM's bilinear surface an eye may be (the drawn triangles differ from it by centimetres). */
-    public static final double BELOW_GROUND_TOLERANCE_METRES = 0.5;
+    /**
+     * How far above the DEM's drawn surface ({@link Mosaic#heightAt}) the eye must be, metres: nearer, the views' near
+     * plane (a centimetre at the least) cuts the ground under the eye away.
+     */
+    public static final double MIN_EYE_CLEARANCE_METRES = 0.1;
 
     /** Standing on the DEM at the coordinate, corrected by {@code offsetMetres}. */
     public static Viewpoint onDem(Mosaic mosaic, double latDeg, double lonDeg, double offsetMetres,
@@ -61,7 +73,7 @@ public record Viewpoint(double latDeg, double lonDeg, double groundElevationMetr
                 eyeHeightMetres);
     }
 
-    /** The DEM's bilinear height at a point, metres; an error naming the point where the mosaic has none. */
+    /** The DEM's height at a point (its drawn surface's), metres; an error naming the point where the mosaic has none. */
     static double groundAt(Mosaic mosaic, double latDeg, double lonDeg) {
         double h = mosaic.heightAt(latDeg, lonDeg);
         if (Double.isNaN(h)) {

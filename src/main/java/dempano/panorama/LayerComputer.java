@@ -5,7 +5,7 @@ import dempano.geo.Ellipsoid;
 import dempano.geo.Geodesy;
 import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
-import dempano.terrain.Triangulation;
+import dempano.dem.Triangulation;
 import java.util.EnumMap;
 import java.util.Map;
 import java.util.Set;

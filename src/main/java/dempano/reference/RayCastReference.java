@@ -5,7 +5,7 @@ import dempano.dem.Mosaic;
 import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
-import dempano.terrain.Triangulation;
+import dempano.dem.Triangulation;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.IntStream;
 

@@ -6,7 +6,7 @@ import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
 import dempano.panorama.PanoramaGeometry;
-import dempano.terrain.Triangulation;
+import dempano.dem.Triangulation;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.IntStream;
 

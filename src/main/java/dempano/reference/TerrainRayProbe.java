@@ -6,7 +6,7 @@ import dempano.geo.LocalFrame;
 import dempano.geo.Refraction;
 import dempano.geo.Viewpoint;
 import dempano.panorama.RayProbe;
-import dempano.terrain.Triangulation;
+import dempano.dem.Triangulation;
 import dempano.util.Floors;
 import dempano.util.SmallAngles;
 

@@ -1,5 +1,7 @@
 package dempano.terrain;
 
+import dempano.dem.Triangulation;
+
 /**
  * Level of detail chosen from the error it causes on screen. A square patch of the mosaic grid may be
  * drawn with every {@code step}-th sample only; the coarse surface then departs from the full one by

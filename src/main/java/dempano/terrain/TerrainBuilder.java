@@ -13,6 +13,7 @@ import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.nio.ShortBuffer;
+import dempano.dem.Triangulation;
 import dempano.dem.Mosaic;
 import dempano.geo.Ellipsoid;
 import dempano.geo.LocalFrame;

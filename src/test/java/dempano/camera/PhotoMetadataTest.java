@@ -211,11 +211,11 @@ class PhotoMetadataTest {
         // The phone's GPS altitude is 1234.56 m (the camera's own, height 0). Rows: DEM surface there, camera height
         // given (NaN: none), altitude flag, whether the camera then stands on the DEM.
         PhotoMetadata m = PhotoMetadata.read(phone().write(dir, "phone.jpg", 400, 300));
-        double tolerance = dempano.geo.Viewpoint.BELOW_GROUND_TOLERANCE_METRES;
+        double tolerance = -dempano.geo.Viewpoint.MIN_EYE_CLEARANCE_METRES; // the camera must be that much above it
         Object[][] cases = {
             {Double.NaN, Double.NaN, Double.NaN, false},            // the surface not known: no check
             {1200.0, Double.NaN, Double.NaN, false},                // 34.56 m above the surface
-            {1234.56 + tolerance, Double.NaN, Double.NaN, false},   // just within the tolerance
+            {1234.56 + tolerance - 0.001, Double.NaN, Double.NaN, false}, // just high enough above it
             {1234.56 + tolerance + 0.01, Double.NaN, Double.NaN, true},
             {1262.0, Double.NaN, Double.NaN, true},                 // 27.44 m below: GPS altitudes err that much
             {1262.0, 30.0, Double.NaN, false},                      // a camera 30 m up (a mast, a building) is above it
@@ -233,7 +233,7 @@ class PhotoMetadataTest {
                 assertEquals(0, cam.pose().offsetMetres(), what);
                 assertEquals(dempano.geo.Viewpoint.DEFAULT_EYE_HEIGHT_METRES, cam.pose().cameraHeightMetres(), what);
                 assertTrue(cam.provenance().stream().anyMatch(l -> l.startsWith("camera altitude 1234.56 m from EXIF"
-                        + " GPSAltitude not used: ") && l.contains(" m below the DEM surface (") && l.contains("--offset-m 0")),
+                        + " GPSAltitude not used: ") && l.contains(" the DEM surface (") && l.contains("--offset-m 0")),
                         what);
             } else {
                 assertTrue(cam.pose().absoluteAltitude(), what);

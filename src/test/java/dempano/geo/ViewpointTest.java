@@ -55,11 +55,50 @@ class ViewpointTest {
         assertEquals(1600, v.groundElevationMetres(), 1e-9);
         assertEquals(1630, v.standingAltitudeMetres(), 1e-9);
         assertEquals(1631.7, v.eyeAltitudeMetres(), 1e-9);
-        // A negative offset lowers the eye, down to the surface (0.5 m of tolerance) and no further.
-        assertEquals(1599.7, Viewpoint.onDem(plane(), 46.5, 8.5, -2, 1.7).eyeAltitudeMetres(), 1e-9);
+        // A negative offset lowers the eye, down to 0.1 m above the surface and no further: on it (an eye height of 0)
+        // the ground under it cannot be drawn (GL showed sky where the CPU reference met the ground at its feet).
+        assertEquals(1600.1, Viewpoint.onDem(plane(), 46.5, 8.5, -1.6, 1.7).eyeAltitudeMetres(), 1e-9);
         IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
                 () -> Viewpoint.onDem(plane(), 46.5, 8.5, -30, 1.7));
         assertTrue(e.getMessage().contains("28.3 m below the DEM surface"), e.getMessage());
+        for (double[] offsetAndHeight : new double[][] {{0, 0}, {-1.65, 1.7}, {-2, 1.7}}) {
+            EyeBelowGroundException low = org.junit.jupiter.api.Assertions.assertThrows(EyeBelowGroundException.class,
+                    () -> Viewpoint.onDem(plane(), 46.5, 8.5, offsetAndHeight[0], offsetAndHeight[1]));
+            assertTrue(low.getMessage().contains(offsetAndHeight[0] + offsetAndHeight[1] < 0 ? "below the DEM surface"
+                    : "above the DEM surface (1600.00 m) at 46.500000, 8.500000, where the ground under it cannot be drawn"),
+                    low.getMessage());
+        }
+    }
+
+    /**
+     * The ground is the drawn surface (the triangle of the cell holding the point), not the bilinear height: on samples
+     * alternating 1050 / 950 m every cell's diagonal joins two 1050 m corners, so the drawn surface is 1050 m at every
+     * cell's centre where the bilinear height is 1000 m, and an eye 2 m above that stood 48 m inside the drawn terrain.
+     */
+    @Test
+    void theGroundIsTheDrawnSurfaceNotTheBilinearHeight() {
+        int n = 121;
+        float[] h = new float[n * n];
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                h[r * n + c] = (r + c) % 2 == 0 ? 1050 : 950;
+            }
+        }
+        Mosaic m = Mosaic.around(new InMemoryDem("twisted", List.of(HgtTile.of(new TileId(46, 8), n, h, "twisted"))),
+                46.5, 8.5, 5000, dempano.dem.MissingTilePolicy.SEA_LEVEL);
+        for (int[] cell : new int[][] {{60, 60}, {60, 61}, {13, 100}}) { // both splits
+            double lat = 47 - (cell[0] + 0.5) / 120, lon = 8 + (cell[1] + 0.5) / 120;
+            Viewpoint v = Viewpoint.onDem(m, lat, lon, 0, 2);
+            assertEquals(1050, v.groundElevationMetres(), 1e-6, java.util.Arrays.toString(cell));
+            assertEquals(1052, v.eyeAltitudeMetres(), 1e-6);
+            // Off the diagonal, halfway to a 950 m corner (a quarter of the cell south, three quarters east of the
+            // north-west corner where the diagonal runs NW–SE, a quarter east where it runs NE–SW): 1000 m.
+            assertEquals(1000, m.heightAt(47 - (cell[0] + 0.25) / 120, lon + ((cell[0] + cell[1]) % 2 == 0 ? 0.25 : -0.25) / 120),
+                    1e-6);
+        }
+        // On a sample and on an edge: the samples (and the edge's two), as every triangle holding the point has them.
+        assertEquals(1050, m.heightAt(47 - 60.0 / 120, 8 + 60.0 / 120), 1e-6);
+        assertEquals(1000, m.heightAt(47 - 60.0 / 120, 8 + 60.5 / 120), 1e-6);
     }
 
     @Test

@@ -252,7 +252,7 @@ class LayerComputerTest {
         for (int c0 = (int) Math.floor(m.colOf(LON + 0.021)), c = c0; c < c0 + 2; c++) {
             for (double[] uv : new double[][] {{0.7, 0.2}, {0.2, 0.7}, {0.15, 0.3}, {0.8, 0.9}}) {
                 double lat = m.latOfRow(r + uv[1]), lon = m.lonOfCol(c + uv[0]);
-                boolean nwSe = dempano.terrain.Triangulation.splitsNorthWestToSouthEast(r, c);
+                boolean nwSe = dempano.dem.Triangulation.splitsNorthWestToSouthEast(r, c);
                 int[][] tri = nwSe ? (uv[0] >= uv[1] ? new int[][] {{0, 0}, {0, 1}, {1, 1}} : new int[][] {{0, 0}, {1, 1}, {1, 0}})
                         : (uv[0] + uv[1] <= 1 ? new int[][] {{0, 0}, {0, 1}, {1, 0}} : new int[][] {{0, 1}, {1, 1}, {1, 0}});
                 double[][] v = new double[3][3];

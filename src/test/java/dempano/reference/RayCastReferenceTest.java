@@ -187,10 +187,10 @@ class RayCastReferenceTest {
                 double[] h = {random.nextDouble() * 3000, random.nextDouble() * 3000, random.nextDouble() * 3000,
                         random.nextDouble() * 3000};
                 double south = random.nextDouble(), east = random.nextDouble();
-                int triangle = dempano.terrain.Triangulation.triangleHolding(nwToSe, south, east);
+                int triangle = dempano.dem.Triangulation.triangleHolding(nwToSe, south, east);
                 double sum = 0, elevation = 0;
                 for (int k = 0; k < 3; k++) {
-                    int corner = dempano.terrain.Triangulation.corner(nwToSe, triangle, k);
+                    int corner = dempano.dem.Triangulation.corner(nwToSe, triangle, k);
                     double w = RayCastReference.cornerWeight(nwToSe, triangle, corner, south, east);
                     org.junit.jupiter.api.Assertions.assertTrue(w >= -1e-12, "weight " + w);
                     sum += w;
@@ -198,7 +198,7 @@ class RayCastReferenceTest {
                 }
                 org.junit.jupiter.api.Assertions.assertEquals(1, sum, 1e-12);
                 org.junit.jupiter.api.Assertions.assertEquals(
-                        dempano.terrain.Triangulation.height(nwToSe, h[0], h[1], h[2], h[3], south, east), elevation, 1e-9);
+                        dempano.dem.Triangulation.height(nwToSe, h[0], h[1], h[2], h[3], south, east), elevation, 1e-9);
             }
         }
     }

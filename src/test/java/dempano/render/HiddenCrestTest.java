@@ -38,6 +38,19 @@ class HiddenCrestTest {
         assertNoPixelFartherThanTheReference("tile corner beside missing tiles", req);
     }
 
+    /**
+     * An eye 2 m above the ground in a cell whose corners (593, 546 / 443, 469 m) twist by 75 m: the ground was the
+     * bilinear height, 18 m under the drawn triangles there, so the eye stood inside the terrain (the CPU reference met
+     * it at 0 m in half the panorama, the GL views showed sky through it in 445 676 pixels). It stands on the drawn
+     * surface now.
+     */
+    @Test
+    void anEyeInATwistedCellStandsOnTheDrawnSurface() {
+        PanoramaRequest req = PanoramaRequest.at(44.02375, -71.2520833).withRangeMetres(30_000).withPixelsPerDegree(4)
+                .withElevationRange(new ElevationRange(-30, 20, false)).withColour(false);
+        assertNoPixelFartherThanTheReference("twisted cell at 44.02375, -71.2520833", req);
+    }
+
     private static void assertNoPixelFartherThanTheReference(String scene, PanoramaRequest req) {
         DemDirectory dem = new DemDirectory(SharedData.demDir());
         Panorama gl, ref;

@@ -1,5 +1,6 @@
 package dempano.terrain;
 
+import dempano.dem.Triangulation;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;

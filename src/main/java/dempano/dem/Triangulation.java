@@ -1,4 +1,4 @@
-package dempano.terrain;
+package dempano.dem;
 
 /**
  * How each mosaic cell is split into two triangles: the surface both renderers draw. The cell whose

@@ -1,4 +1,4 @@
-package dempano.terrain;
+package dempano.dem;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
