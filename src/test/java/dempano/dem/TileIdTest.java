@@ -23,6 +23,7 @@ class TileIdTest {
             "N89E179.hgt, 89, 179, N89E179",
             "S90W180.HGT, -90, -180, S90W180",
             "N46E008.tif, 46, 8, N46E008",
+            "N46E008.hgt.gz, 46, 8, N46E008",
             "s16e166_dem.TIFF, -16, 166, S16E166",
             "Copernicus_DSM_COG_10_N46_00_E008_00_DEM.tif, 46, 8, N46E008",
             "Copernicus_DSM_COG_30_S16_00_W155_00_DEM.tif, -16, -155, S16W155",
@@ -35,7 +36,7 @@ class TileIdTest {
 
     @ParameterizedTest
     @CsvSource({"N46E008.png", "Copernicus_DSM_COG_10_N46_00_E008_DEM.tif", "X46E008.hgt", "N4E008.hgt", "N46E08.hgt", "N90E000.hgt", "N10E180.hgt",
-            "S91E000.hgt", "N10W181.hgt", "N46E008.zip", "N46E008.hgt.gz",
+            "S91E000.hgt", "N10W181.hgt", "N46E008.zip", "N46E008.gz", "N46E008.hgt.bz2",
             // No tile is named by a south-west corner at S00 or W000 (they were read as N00 and E000).
             "S00E010.hgt", "N45W000.hgt", "s00w000.tif", "Copernicus_DSM_COG_10_S00_00_E010_00_DEM.tif"})
     void rejectsBadNames(String file) {

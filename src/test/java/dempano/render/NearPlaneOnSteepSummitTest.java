@@ -12,12 +12,11 @@ import dempano.panorama.Panorama;
 import org.junit.jupiter.api.Test;
 
 /**
- * A summit viewpoint on a steep cell (Eggishorn, 46.4316 N 8.0929 E): the eye stands 2 m above the DEM's bilinear
- * height there, but the surface drawn (the cell's triangle under the eye) is 1.1 m higher, and the slope rises
- * within metres. A near plane set from the bilinear clearance (1 m) cut that slope away and the views looked
- * through the ground: 3.4 % of the pixels were more than 5 % off the CPU reference (10 px/°, 80 km, −15…15°).
- * Set from the clearance over the drawn surface (0.45 m) the panorama matches the reference: 201 of 1 080 000
- * pixels more than 5 % off (0.019 %), p99 2e-4 (measured). Here at 5 px/°, 30 km.
+ * A summit viewpoint on a steep cell (Eggishorn, 46.4316 N 8.0929 E), the slope rising within metres of the eye. The
+ * eye stood 2 m above the DEM's bilinear height there, 0.9 m above the surface drawn (the cell's triangle), and a 1 m
+ * near plane cut the slope away: the views looked through the ground, 3.4 % of the pixels more than 5 % off the CPU
+ * reference (10 px/°, 80 km, −15…15°). The ground is the drawn surface now, the eye 2 m above it, and the near plane
+ * is kept within that clearance. Here at 5 px/°, 30 km.
  */
 class NearPlaneOnSteepSummitTest {
     @Test
@@ -37,6 +36,6 @@ class NearPlaneOnSteepSummitTest {
         DistanceComparison c = DistanceComparison.of(gl.distanceArray(), reference.distanceArray(), reference.widthPx());
         System.out.println("Eggishorn, near plane " + near + " m: " + c);
         assertTrue(c.shareOver5Percent() < 0.001, "pixels more than 5 % off the reference: " + c);
-        assertTrue(near < 0.9, "the near plane within the eye's 0.9 m clearance over the drawn surface: " + near);
+        assertTrue(near < 2, "the near plane within the eye's 2 m clearance over the drawn surface: " + near);
     }
 }
