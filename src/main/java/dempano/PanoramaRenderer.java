@@ -580,20 +580,8 @@ public final class PanoramaRenderer implements AutoCloseable {
         try {
             return queue.take();
         } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw interrupted("rendering", e);
+            throw dempano.util.Threads.interrupted("rendering", e);
         }
-    }
-
-    /**
-     * What an interrupt of the rendering thread ends a render with: a {@link java.util.concurrent.CancellationException}
-     * (an IllegalStateException, as before, that a caller can tell from a closed renderer's), the thread's interrupt
-     * flag set again.
-     */
-    static java.util.concurrent.CancellationException interrupted(String what, InterruptedException cause) {
-        java.util.concurrent.CancellationException e = new java.util.concurrent.CancellationException("interrupted while " + what);
-        e.initCause(cause);
-        return e;
     }
 
     /** Waits for the drawing and throws what it threw, as it threw it. */

@@ -43,7 +43,7 @@ public final class DemDirectory implements DemSource {
     private final List<String> warnings;
     private final Map<TileId, Cached> cache;
     private final VoidFill voidFill;
-    /** Per tile: files (relative to the folder) whose names begin with its name but are not read as tiles. */
+    /** Per tile: files (paths) whose names begin with its name but are not read as tiles. */
     private final Map<TileId, List<String>> unreadNamedFor;
 
     /** A loaded tile and the file's state when it was read: a changed file is read again. */
@@ -104,7 +104,7 @@ public final class DemDirectory implements DemSource {
             boolean tileName = TileId.isTileFileName(name);
             TileId namedFor = tileName ? null : TileId.namedAtStart(name);
             if (namedFor != null) { // N46E008.hgt.bak: a hint should N46E008 be missing
-                unread.computeIfAbsent(namedFor, k -> new ArrayList<>()).add(directory.relativize(p).toString());
+                unread.computeIfAbsent(namedFor, k -> new ArrayList<>()).add(p.toString());
             }
             if (!TileId.looksLikeTileFile(name)) {
                 continue; // README, SHA256SUMS, ...
@@ -115,6 +115,7 @@ public final class DemDirectory implements DemSource {
             }
             index.computeIfAbsent(TileId.parseFileName(name), k -> new ArrayList<>()).add(new Candidate(p, problem(p)));
         }
+        unread.replaceAll((id, paths) -> List.copyOf(paths));
         this.unreadNamedFor = Collections.unmodifiableMap(unread);
         Map<TileId, Path> usable = new TreeMap<>();
         index.forEach((id, c) -> {
@@ -265,12 +266,7 @@ public final class DemDirectory implements DemSource {
 
     @Override
     public List<String> unreadFilesNamedFor(TileId id) {
-        List<String> names = unreadNamedFor.getOrDefault(id, List.of());
-        List<String> paths = new ArrayList<>(names.size());
-        for (String n : names) {
-            paths.add(directory.resolve(n).toString());
-        }
-        return paths;
+        return unreadNamedFor.getOrDefault(id, List.of());
     }
 
     /** A folder per latitude, as AWS Terrain Tiles' "skadi" layout has them ({@code N46}, {@code S16}). */

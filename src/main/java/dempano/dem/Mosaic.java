@@ -140,11 +140,11 @@ public final class Mosaic {
                 ipd = Math.max(ipd, t.intervalsPerDegree());
             }
         }
+        List<String> unread = new ArrayList<>(); // files there for a missing tile under a name not read: a hint
+        for (TileId id : missing) {
+            unread.addAll(source.unreadFilesNamedFor(id));
+        }
         if (!missing.isEmpty() && policy == MissingTilePolicy.ERROR) {
-            List<String> unread = new ArrayList<>();
-            for (TileId id : missing) {
-                unread.addAll(source.unreadFilesNamedFor(id));
-            }
             throw new DemException((missing.size() == 1 ? "tile " + missing.get(0) + " is" : missing.size() + " tiles "
                     + missing + " are") + " needed for the range of sight but " + source.describe()
                     + " has no usable file for " + (missing.size() == 1 ? "it" : "them") + " (--missing-tiles error)"
@@ -157,13 +157,9 @@ public final class Mosaic {
         }
         if (!missing.isEmpty()) {
             warnings.add("no data for " + missing + " in " + source.describe() + ": treated as sea level (0 m)");
-            List<String> unread = new ArrayList<>();
-            for (TileId id : missing) {
-                unread.addAll(source.unreadFilesNamedFor(id));
-            }
-            if (!unread.isEmpty()) {
-                warnings.add(unreadHint(unread));
-            }
+        }
+        if (!unread.isEmpty()) {
+            warnings.add(unreadHint(unread));
         }
         if (ipd == 0) {
             ipd = HgtTile.SRTM3_SAMPLES - 1; // only sea: keep SRTM3 spacing

@@ -63,6 +63,11 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
         if (!m.matches()) {
             throw new DemException("'" + fileName + "' is not a tile file name (" + EXPECTED + ")");
         }
+        return ofNameParts(m, fileName);
+    }
+
+    /** The tile a match's groups 1–4 (N|S, latitude, E|W, longitude) name, or a DemException naming the file. */
+    private static TileId ofNameParts(Matcher m, String fileName) {
         int lat = Integer.parseInt(m.group(2));
         int lon = Integer.parseInt(m.group(4));
         boolean south = m.group(1).equalsIgnoreCase("S");
@@ -110,12 +115,11 @@ public record TileId(int latSouthDeg, int lonWestDeg) implements Comparable<Tile
         if (!m.find()) {
             return null;
         }
-        int lat = Integer.parseInt(m.group(2)), lon = Integer.parseInt(m.group(4));
-        boolean south = m.group(1).equalsIgnoreCase("S"), west = m.group(3).equalsIgnoreCase("W");
-        if (lat > (south ? 90 : 89) || lon > (west ? 180 : 179) || (south && lat == 0) || (west && lon == 0)) {
-            return null;
+        try {
+            return ofNameParts(m, fileName);
+        } catch (DemException e) {
+            return null; // N99E999.bak names no tile
         }
-        return new TileId(south ? -lat : lat, west ? -lon : lon);
     }
 
     /** True if a file name ends in {@code .tif} or {@code .tiff}, any case. */

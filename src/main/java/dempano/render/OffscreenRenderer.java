@@ -346,10 +346,7 @@ public final class OffscreenRenderer {
                 }
             }
         } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            java.util.concurrent.CancellationException c = new java.util.concurrent.CancellationException("interrupted while " + what);
-            c.initCause(e); // (an IllegalStateException, as before, that a caller can tell from a closed renderer's)
-            throw c;
+            throw dempano.util.Threads.interrupted(what, e);
         } catch (ExecutionException e) {
             throw new IllegalStateException(what + " failed: " + e.getCause(), e.getCause());
         }

@@ -6,6 +6,18 @@ public final class Threads {
     }
 
     /**
+     * What an interrupted wait ends a render (or another cancellable piece of work) with: a
+     * {@link java.util.concurrent.CancellationException} saying "interrupted while {@code what}" (an IllegalStateException,
+     * which a caller can tell from a closed renderer's), the thread's interrupt flag set again.
+     */
+    public static java.util.concurrent.CancellationException interrupted(String what, InterruptedException cause) {
+        Thread.currentThread().interrupt();
+        java.util.concurrent.CancellationException e = new java.util.concurrent.CancellationException("interrupted while " + what);
+        e.initCause(cause);
+        return e;
+    }
+
+    /**
      * Waits for a thread to end even when interrupted meanwhile (the work it does must not be abandoned half-way:
      * a file being written, a scene being drawn); the interrupt flag is restored afterwards.
      */

@@ -13,17 +13,26 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class ViewpointTest {
-    private static Mosaic plane() {
+    /** Tile N46E008 of 121² samples, height(row, column) metres (row 0 north), as a mosaic around its centre. */
+    private static Mosaic tile(String name, java.util.function.IntBinaryOperator height) {
         int n = 121;
         float[] h = new float[n * n];
         for (int r = 0; r < n; r++) {
             for (int c = 0; c < n; c++) {
-                h[r * n + c] = 1000 + 10 * c; // rises 10 m per sample eastward
+                int v = height.applyAsInt(r, c);
+                h[r * n + c] = v == VOID ? Float.NaN : v;
             }
         }
-        return Mosaic.around(new InMemoryDem("plane", List.of(HgtTile.of(new TileId(46, 8), n, h, "plane"))),
+        return Mosaic.around(new InMemoryDem(name, List.of(HgtTile.of(new TileId(46, 8), n, h, name))),
                 46.5, 8.5, 5000, MissingTilePolicy.ERROR);
     }
+
+    private static Mosaic plane() {
+        return tile("plane", (r, c) -> 1000 + 10 * c); // rises 10 m per sample eastward
+    }
+
+    /** A height of {@link #tile} that is a void. */
+    private static final int VOID = Integer.MIN_VALUE;
 
     /**
      * A viewpoint whose ground is a filled void (a summit the DEM lost: its height invented, hundreds of metres low) is
@@ -31,16 +40,8 @@ class ViewpointTest {
      */
     @Test
     void aViewpointStandingInAFilledVoidIsSaid() {
-        int n = 121;
-        float[] h = new float[n * n];
-        for (int r = 0; r < n; r++) {
-            for (int c = 0; c < n; c++) {
-                // A void 11 × 11 samples around the tile's centre (sample 60, 60 = 46.5 N, 8.5 E).
-                h[r * n + c] = Math.abs(r - 60) <= 5 && Math.abs(c - 60) <= 5 ? Float.NaN : 1000 + 10 * c;
-            }
-        }
-        Mosaic m = Mosaic.around(new InMemoryDem("voids", List.of(HgtTile.of(new TileId(46, 8), n, h, "voids"))),
-                46.5, 8.5, 5000, MissingTilePolicy.ERROR);
+        // A void 11 × 11 samples around the tile's centre (sample 60, 60 = 46.5 N, 8.5 E).
+        Mosaic m = tile("voids", (r, c) -> Math.abs(r - 60) <= 5 && Math.abs(c - 60) <= 5 ? VOID : 1000 + 10 * c);
         String w = Viewpoint.onDem(m, 46.5, 8.5, 0, 2).filledVoidWarning(m).orElseThrow();
         assertTrue(w.startsWith("the viewpoint stands in a void of the DEM, filled by interpolation: its ground (1600.0 m)"), w);
         // The void's last column is sample 65; between samples 65 and 66 one of the four is still a void.
@@ -77,15 +78,7 @@ class ViewpointTest {
      */
     @Test
     void theGroundIsTheDrawnSurfaceNotTheBilinearHeight() {
-        int n = 121;
-        float[] h = new float[n * n];
-        for (int r = 0; r < n; r++) {
-            for (int c = 0; c < n; c++) {
-                h[r * n + c] = (r + c) % 2 == 0 ? 1050 : 950;
-            }
-        }
-        Mosaic m = Mosaic.around(new InMemoryDem("twisted", List.of(HgtTile.of(new TileId(46, 8), n, h, "twisted"))),
-                46.5, 8.5, 5000, dempano.dem.MissingTilePolicy.SEA_LEVEL);
+        Mosaic m = tile("twisted", (r, c) -> (r + c) % 2 == 0 ? 1050 : 950);
         for (int[] cell : new int[][] {{60, 60}, {60, 61}, {13, 100}}) { // both splits
             double lat = 47 - (cell[0] + 0.5) / 120, lon = 8 + (cell[1] + 0.5) / 120;
             Viewpoint v = Viewpoint.onDem(m, lat, lon, 0, 2);
